@@ -1,0 +1,47 @@
+#include "app/data_paths.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace app {
+namespace fs = std::filesystem;
+
+namespace {
+bool looksLikeDataRoot(const fs::path& root) {
+  std::error_code error;
+  return fs::is_directory(root / "shaders", error) && fs::is_directory(root / "levels", error);
+}
+
+fs::path executableDirectory() {
+  std::error_code error;
+  fs::path self = fs::read_symlink("/proc/self/exe", error);
+  return error ? fs::path() : self.parent_path();
+}
+}  // namespace
+
+fs::path findDataRoot() {
+  if (const char* explicitRoot = std::getenv("SIGHTLINE_DATA_DIR"); explicitRoot && *explicitRoot)
+    return explicitRoot;
+  const fs::path exeDir = executableDirectory();
+  for (const fs::path& candidate :
+       {exeDir / ".." / "share" / "sightline", exeDir, fs::path(SIGHTLINE_SOURCE_DIR)}) {
+    if (!candidate.empty() && looksLikeDataRoot(candidate)) return fs::weakly_canonical(candidate);
+  }
+  return SIGHTLINE_SOURCE_DIR;
+}
+
+std::vector<fs::path> shippedLevels(const fs::path& dataRoot) {
+  std::vector<fs::path> levels;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator(dataRoot / "levels", error)) {
+    const fs::path& path = entry.path();
+    if (path.extension() == ".json" && path.filename().string().find(".schema.") == std::string::npos)
+      levels.push_back(path);
+  }
+  std::sort(levels.begin(), levels.end());
+  return levels;
+}
+
+}  // namespace app

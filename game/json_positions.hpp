@@ -1,0 +1,54 @@
+#pragma once
+// nlohmann::json keeps no source positions, so error messages would have none. This scanner
+// walks JSON text that has already parsed successfully and remembers where every value (and
+// every object key) starts, indexed by JSON pointer.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+
+namespace game {
+
+struct SourcePosition {
+  int line = 1;    // 1-based
+  int column = 1;  // 1-based, counted in bytes of the line
+};
+
+class JsonPositions {
+ public:
+  // `text` must be valid JSON (parse it with nlohmann first); malformed text gives partial results.
+  static JsonPositions scan(std::string_view text);
+
+  // Where the value at `pointer` starts ("" is the root, "/materials/glass/ior" a member). Falls
+  // back to the nearest enclosing value that was recorded, then to 1:1.
+  SourcePosition valueAt(const std::string& pointer) const;
+
+  // Where the key of the object member at `pointer` starts; the value's position if none.
+  SourcePosition keyAt(const std::string& pointer) const;
+
+  // The first member whose key repeats an earlier key in the same object, if any (nlohmann
+  // silently keeps only one of them).
+  struct DuplicateKey {
+    std::string pointer;
+    SourcePosition position;  // of the repeated key
+  };
+  const std::optional<DuplicateKey>& firstDuplicateKey() const { return firstDuplicateKey_; }
+
+ private:
+  std::unordered_map<std::string, SourcePosition> values_;
+  std::unordered_map<std::string, SourcePosition> keys_;
+  std::optional<DuplicateKey> firstDuplicateKey_;
+};
+
+// Escapes one reference token for a JSON pointer ("~" -> "~0", "/" -> "~1").
+std::string escapeJsonPointerToken(std::string_view token);
+
+// Line and column of the byte at zero-based `offset` (clamped to the end of the text).
+SourcePosition positionOfOffset(std::string_view text, std::size_t offset);
+
+// Line and column of a syntax error reported by nlohmann::json::parse_error::byte, which counts
+// the bytes read including the offending one.
+SourcePosition positionOfParseError(std::string_view text, std::size_t parseErrorByte);
+
+}  // namespace game

@@ -1,0 +1,29 @@
+#include "game/level.hpp"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace game {
+
+glm::mat4 entityTransform(const Entity& entity) {
+  const glm::vec3 radians = glm::radians(entity.rotationDegrees);
+  glm::mat4 transform = glm::translate(glm::mat4(1.0f), entity.position);
+  transform = glm::rotate(transform, radians.y, glm::vec3(0, 1, 0));  // yaw
+  transform = glm::rotate(transform, radians.x, glm::vec3(1, 0, 0));  // pitch
+  transform = glm::rotate(transform, radians.z, glm::vec3(0, 0, 1));  // roll
+  return glm::scale(transform, entity.scale);
+}
+
+render::SceneDesc buildSceneDesc(const Level& level) {
+  render::SceneDesc scene;
+  scene.meshes = level.meshes;
+  scene.materials = level.materials;
+  scene.lights = level.lights;
+  scene.environment = level.environment;
+  scene.instances.reserve(level.entities.size());
+  for (const Entity& entity : level.entities) {
+    scene.instances.push_back({entity.mesh, entity.material, entityTransform(entity)});
+  }
+  return scene;
+}
+
+}  // namespace game

@@ -1,0 +1,86 @@
+#pragma once
+// Bottom-level structures (one per mesh, built once, compacted) and the top-level structure
+// over instances (built once, then updated in place when instances move).
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+#include <vulkan/vulkan.h>
+
+#include "render/buffer.hpp"
+
+namespace render {
+
+class Context;
+
+class AccelerationStructure {
+ public:
+  AccelerationStructure() = default;
+  AccelerationStructure(const Context& context, VkAccelerationStructureTypeKHR type,
+                        VkDeviceSize size, const std::string& name);
+  ~AccelerationStructure();
+  AccelerationStructure(AccelerationStructure&& other) noexcept;
+  AccelerationStructure& operator=(AccelerationStructure&& other) noexcept;
+  AccelerationStructure(const AccelerationStructure&) = delete;
+  AccelerationStructure& operator=(const AccelerationStructure&) = delete;
+
+  VkAccelerationStructureKHR handle() const { return handle_; }
+  VkDeviceAddress address() const { return address_; }
+
+ private:
+  void release();
+
+  const Context* context_ = nullptr;
+  Buffer storage_;
+  VkAccelerationStructureKHR handle_ = VK_NULL_HANDLE;
+  VkDeviceAddress address_ = 0;
+};
+
+struct TriangleGeometry {
+  VkDeviceAddress vertexAddress = 0;  // first vertex of this mesh; position is the first vec3
+  VkDeviceSize vertexStride = 0;
+  uint32_t vertexCount = 0;
+  VkDeviceAddress indexAddress = 0;  // uint32 indices, relative to the first vertex
+  uint32_t triangleCount = 0;
+};
+
+struct BottomLevelStats {
+  VkDeviceSize builtBytes = 0;
+  VkDeviceSize compactedBytes = 0;
+};
+
+// Builds all meshes' structures in one submission, then compacts them.
+std::vector<AccelerationStructure> buildBottomLevels(const Context& context,
+                                                     std::span<const TriangleGeometry> meshes,
+                                                     BottomLevelStats* stats = nullptr);
+
+struct TlasInstance {
+  const AccelerationStructure* blas = nullptr;
+  glm::mat4 objectToWorld{1.0f};
+  uint32_t customIndex = 0;  // gl_InstanceCustomIndexEXT
+};
+
+class TopLevel {
+ public:
+  TopLevel(const Context& context, std::span<const TlasInstance> instances);
+
+  // Writes new transforms and records an in-place update (the structure's topology stays).
+  // The caller makes sure the GPU no longer reads the previous frame's instances.
+  void recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4> objectToWorld);
+
+  const AccelerationStructure& structure() const { return structure_; }
+  uint32_t instanceCount() const { return instanceCount_; }
+
+ private:
+  void writeInstances(std::span<const TlasInstance> instances);
+  void record(VkCommandBuffer commands, bool update);
+
+  const Context* context_;
+  uint32_t instanceCount_ = 0;
+  std::vector<VkAccelerationStructureInstanceKHR> instances_;
+  Buffer instanceBuffer_;
+  Buffer scratch_;
+  AccelerationStructure structure_;
+};
+
+}  // namespace render

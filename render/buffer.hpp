@@ -1,0 +1,58 @@
+#pragma once
+// A VkBuffer with its own memory: owning, movable, optionally mapped.
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace render {
+
+class Context;
+
+enum class MemoryUse {
+  DeviceOnly,  // fastest for the GPU; filled by commands
+  Upload,      // host-written, GPU-read: device-local and host-visible where the device has it
+  Readback,    // GPU-written, host-read: host cached where available
+};
+
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usage, MemoryUse memory,
+         const std::string& name);
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  VkBuffer handle() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  VkDeviceAddress address() const { return address_; }  // 0 without SHADER_DEVICE_ADDRESS usage
+  void* mapped() const { return mapped_; }                // null for DeviceOnly
+
+  void write(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
+  template <typename T>
+  void write(std::span<const T> items, VkDeviceSize offset = 0) {
+    write(items.data(), items.size_bytes(), offset);
+  }
+  void read(void* data, VkDeviceSize bytes, VkDeviceSize offset = 0) const;
+
+ private:
+  void release();
+
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+  VkDeviceAddress address_ = 0;
+  void* mapped_ = nullptr;
+};
+
+constexpr VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
+  return (value + alignment - 1) / alignment * alignment;
+}
+
+}  // namespace render

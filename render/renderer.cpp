@@ -1,0 +1,401 @@
+#include "render/renderer.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+
+#include "render/context.hpp"
+#include "render/gpu_types.hpp"
+#include "render/ray_tracing_pipeline.hpp"
+#include "render/shader_compiler.hpp"
+#include "render/storage_image.hpp"
+#include "render/vulkan_error.hpp"
+
+namespace render {
+namespace {
+
+static_assert(sizeof(Vertex) == VERTEX_FLOATS * sizeof(float), "vertex layout matches shaders");
+
+constexpr VkShaderStageFlags kRayStages =
+    VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
+    VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
+constexpr VkShaderStageFlags kAllStages = kRayStages | VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkBufferUsageFlags kGeometryUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
+
+template <typename T>
+Buffer makeStorage(const Context& context, const std::vector<T>& items, VkBufferUsageFlags usage,
+                   const char* name) {
+  // Zero-length buffers are invalid; an empty list still gets one (unread) element.
+  const VkDeviceSize bytes = std::max<VkDeviceSize>(items.size(), 1) * sizeof(T);
+  Buffer buffer(context, bytes, usage, MemoryUse::Upload, name);
+  if (!items.empty()) buffer.write(items.data(), items.size() * sizeof(T));
+  return buffer;
+}
+
+void memoryBarrier(VkCommandBuffer commands, VkPipelineStageFlags srcStages,
+                   VkAccessFlags srcAccess, VkPipelineStageFlags dstStages,
+                   VkAccessFlags dstAccess) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  vkCmdPipelineBarrier(commands, srcStages, dstStages, 0, 1, &barrier, 0, nullptr, 0, nullptr);
+}
+
+void imageLayoutBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from,
+                        VkImageLayout to, VkPipelineStageFlags srcStages, VkAccessFlags srcAccess,
+                        VkPipelineStageFlags dstStages, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commands, srcStages, dstStages, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+}  // namespace
+
+Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
+                   const RendererOptions& options)
+    : context_(context), options_(options), environment_(scene.environment) {
+  if (options.width == 0 || options.height == 0 || options.width > 16384 ||
+      options.height > 16384) {
+    throw RenderError("image size must be between 1x1 and 16384x16384");
+  }
+  // One vertex and index buffer for all meshes; each instance records where its mesh starts.
+  std::vector<Vertex> allVertices;
+  std::vector<uint32_t> allIndices;
+  struct MeshRange {
+    uint32_t firstIndex, vertexOffset, indexCount, vertexCount;
+  };
+  std::vector<MeshRange> ranges;
+  for (const MeshData& mesh : scene.meshes) {
+    if (mesh.indices.empty() || mesh.indices.size() % 3 != 0 || mesh.vertices.empty())
+      throw RenderError("mesh '" + mesh.name + "' has no triangles");
+    for (uint32_t index : mesh.indices) {
+      if (index >= mesh.vertices.size())
+        throw RenderError("mesh '" + mesh.name + "' has an index past its vertices");
+    }
+    ranges.push_back({static_cast<uint32_t>(allIndices.size()),
+                      static_cast<uint32_t>(allVertices.size()),
+                      static_cast<uint32_t>(mesh.indices.size()),
+                      static_cast<uint32_t>(mesh.vertices.size())});
+    allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
+    allIndices.insert(allIndices.end(), mesh.indices.begin(), mesh.indices.end());
+  }
+  triangleCount_ = 0;
+  std::vector<gpu::GpuInstance> gpuInstances;
+  for (const InstanceDesc& instance : scene.instances) {
+    if (instance.mesh >= ranges.size() || instance.material >= scene.materials.size())
+      throw RenderError("an instance refers to a mesh or material that does not exist");
+    const MeshRange& range = ranges[instance.mesh];
+    gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0)});
+    triangleCount_ += range.indexCount / 3;
+  }
+  std::vector<gpu::GpuMaterial> gpuMaterials;
+  for (const MaterialDesc& material : scene.materials) {
+    gpuMaterials.push_back({glm::vec4(material.baseColor, material.specular),
+                            glm::vec4(material.emissive, material.roughness)});
+  }
+  std::vector<gpu::GpuLight> gpuLights;
+  for (const LightDesc& light : scene.lights) {
+    const glm::vec3 direction = glm::length(light.direction) > 0.0f
+                                    ? glm::normalize(light.direction)
+                                    : glm::vec3(0.0f, -1.0f, 0.0f);
+    gpuLights.push_back({glm::vec4(light.position, static_cast<float>(light.type)),
+                         glm::vec4(direction, 0.0f), glm::vec4(light.color * light.intensity, 0.0f)});
+  }
+  lightCount_ = static_cast<uint32_t>(gpuLights.size());
+
+  vertices_ = makeStorage(context, allVertices, kGeometryUsage, "vertices");
+  indices_ = makeStorage(context, allIndices, kGeometryUsage, "indices");
+  instances_ = makeStorage(context, gpuInstances, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
+  materials_ = makeStorage(context, gpuMaterials, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
+  lights_ = makeStorage(context, gpuLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
+  frameUniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                          MemoryUse::Upload, "frame uniforms");
+  counters_ = Buffer(context, sizeof(gpu::FrameCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                     MemoryUse::Readback, "frame counters");
+  readback_ = Buffer(context, VkDeviceSize(options.width) * options.height * 4,
+                     VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
+
+  std::vector<TriangleGeometry> geometries;
+  for (const MeshRange& range : ranges) {
+    geometries.push_back({vertices_.address() + VkDeviceSize(range.vertexOffset) * sizeof(Vertex),
+                          sizeof(Vertex), range.vertexCount,
+                          indices_.address() + VkDeviceSize(range.firstIndex) * sizeof(uint32_t),
+                          range.indexCount / 3});
+  }
+  bottomLevels_ = buildBottomLevels(context, geometries);
+  std::vector<TlasInstance> tlasInstances;
+  for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    tlasInstances.push_back(
+        {&bottomLevels_[scene.instances[i].mesh], scene.instances[i].objectToWorld, i});
+  }
+  topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
+
+  hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
+                                             VK_FORMAT_R32G32B32A32_SFLOAT, 0, "hdr radiance");
+  outputImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
+                                                VK_FORMAT_R8G8B8A8_UNORM,
+                                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
+  createDescriptors();
+  createPipelines(compiler);
+
+  VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  allocateInfo.commandPool = context.commandPool();
+  allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  allocateInfo.commandBufferCount = 1;
+  vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
+          "vkAllocateCommandBuffers");
+  VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &frameDone_), "vkCreateFence");
+}
+
+Renderer::~Renderer() {
+  VkDevice device = context_.device();
+  vkDeviceWaitIdle(device);
+  if (frameDone_) vkDestroyFence(device, frameDone_, nullptr);
+  if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
+  if (tonemapPipeline_) vkDestroyPipeline(device, tonemapPipeline_, nullptr);
+  rayTracingPipeline_.reset();
+  if (pipelineLayout_) vkDestroyPipelineLayout(device, pipelineLayout_, nullptr);
+  if (descriptorPool_) vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
+  if (setLayout_) vkDestroyDescriptorSetLayout(device, setLayout_, nullptr);
+}
+
+void Renderer::createDescriptors() {
+  VkDevice device = context_.device();
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 10> bindings = {{
+      {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
+      {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+      {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+      {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+      {BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+  }};
+  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+  std::vector<VkDescriptorPoolSize> poolSizes;
+  for (const auto& [binding, type] : bindings) {
+    layoutBindings.push_back({binding, type, 1, kAllStages, nullptr});
+    poolSizes.push_back({type, 1});
+  }
+  VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
+  layoutInfo.pBindings = layoutBindings.data();
+  vkCheck(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &setLayout_),
+          "vkCreateDescriptorSetLayout");
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = static_cast<uint32_t>(poolSizes.size());
+  poolInfo.pPoolSizes = poolSizes.data();
+  vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &descriptorPool_),
+          "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  allocateInfo.descriptorPool = descriptorPool_;
+  allocateInfo.descriptorSetCount = 1;
+  allocateInfo.pSetLayouts = &setLayout_;
+  vkCheck(vkAllocateDescriptorSets(device, &allocateInfo, &descriptorSet_),
+          "vkAllocateDescriptorSets");
+
+  VkAccelerationStructureKHR tlas = topLevel_->structure().handle();
+  VkWriteDescriptorSetAccelerationStructureKHR tlasWrite{
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+  tlasWrite.accelerationStructureCount = 1;
+  tlasWrite.pAccelerationStructures = &tlas;
+  const VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdrImage_->view(), VK_IMAGE_LAYOUT_GENERAL};
+  const VkDescriptorImageInfo outputInfo{VK_NULL_HANDLE, outputImage_->view(),
+                                         VK_IMAGE_LAYOUT_GENERAL};
+  const std::array<std::pair<uint32_t, const Buffer*>, 7> buffers = {{
+      {BINDING_FRAME, &frameUniforms_},
+      {BINDING_INSTANCES, &instances_},
+      {BINDING_MATERIALS, &materials_},
+      {BINDING_LIGHTS, &lights_},
+      {BINDING_VERTICES, &vertices_},
+      {BINDING_INDICES, &indices_},
+      {BINDING_COUNTERS, &counters_},
+  }};
+  std::array<VkDescriptorBufferInfo, 7> bufferInfos{};
+  std::vector<VkWriteDescriptorSet> writes;
+  auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
+    VkWriteDescriptorSet entry{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    entry.dstSet = descriptorSet_;
+    entry.dstBinding = binding;
+    entry.descriptorCount = 1;
+    entry.descriptorType = type;
+    writes.push_back(entry);
+    return writes.back();
+  };
+  write(BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR).pNext = &tlasWrite;
+  write(BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).pImageInfo = &hdrInfo;
+  write(BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).pImageInfo = &outputInfo;
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    bufferInfos[i] = {buffers[i].second->handle(), 0, VK_WHOLE_SIZE};
+    write(buffers[i].first, buffers[i].first == BINDING_FRAME ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                                               : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
+        .pBufferInfo = &bufferInfos[i];
+  }
+  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+
+  VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  pipelineLayoutInfo.setLayoutCount = 1;
+  pipelineLayoutInfo.pSetLayouts = &setLayout_;
+  vkCheck(vkCreatePipelineLayout(device, &pipelineLayoutInfo, nullptr, &pipelineLayout_),
+          "vkCreatePipelineLayout");
+}
+
+void Renderer::createPipelines(ShaderCompiler& compiler) {
+  RayTracingShaders shaders;
+  shaders.raygen = compiler.compile("raygen.rgen").spirv;
+  shaders.surfaceMiss = compiler.compile("surface.rmiss").spirv;
+  shaders.shadowMiss = compiler.compile("shadow.rmiss").spirv;
+  shaders.surfaceClosestHit = compiler.compile("surface.rchit").spirv;
+  // Only ray-gen traces (primary and shadow rays), so one level of recursion is enough.
+  rayTracingPipeline_ =
+      std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, shaders, 1);
+
+  const std::vector<uint32_t> tonemap = compiler.compile("tonemap.comp").spirv;
+  VkShaderModule module = createShaderModule(context_, tonemap, "tonemap");
+  VkComputePipelineCreateInfo createInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  createInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  createInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  createInfo.stage.module = module;
+  createInfo.stage.pName = "main";
+  createInfo.layout = pipelineLayout_;
+  VkResult result = vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &createInfo,
+                                             nullptr, &tonemapPipeline_);
+  vkDestroyShaderModule(context_.device(), module, nullptr);
+  vkCheck(result, "vkCreateComputePipelines");
+  context_.setName(tonemapPipeline_, VK_OBJECT_TYPE_PIPELINE, "tonemap pipeline");
+}
+
+void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
+  if (objectToWorld.size() != topLevel_->instanceCount())
+    throw RenderError("setInstanceTransforms: expected one transform per instance");
+  pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
+}
+
+void Renderer::writeFrameUniforms(const FrameDesc& frame) {
+  const CameraDesc& camera = frame.camera;
+  const float yaw = glm::radians(camera.yawDegrees);
+  const float pitch = glm::radians(camera.pitchDegrees);
+  const glm::vec3 forward(-std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                          -std::cos(yaw) * std::cos(pitch));
+  const glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
+  glm::vec3 right = glm::cross(forward, worldUp);
+  // Looking straight up or down: keep the yaw's right vector.
+  right = glm::length(right) > 1e-6f ? glm::normalize(right)
+                                     : glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tanHalf = std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f);
+  const float aspect = float(options_.width) / float(options_.height);
+
+  gpu::FrameUniforms uniforms{};
+  uniforms.cameraPosition = glm::vec4(camera.position, 1.0f);
+  uniforms.cameraRight = glm::vec4(right * tanHalf * aspect, 0.0f);
+  uniforms.cameraUp = glm::vec4(up * tanHalf, 0.0f);
+  uniforms.cameraForward = glm::vec4(forward, 0.0f);
+  uniforms.skyZenith = glm::vec4(environment_.skyZenith, 0.0f);
+  uniforms.skyHorizon = glm::vec4(environment_.skyHorizon, 0.0f);
+  uniforms.ambient = glm::vec4(environment_.ambient, 0.0f);
+  uniforms.sizeFrameLights = glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
+  uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
+                                       static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
+  frameUniforms_.write(&uniforms, sizeof uniforms);
+}
+
+void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
+  if (!pendingTransforms_.empty()) {
+    // The previous trace read the TLAS; the update rewrites it.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0,
+                  VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0);
+    topLevel_->recordUpdate(commands, pendingTransforms_);
+    pendingTransforms_.clear();
+    memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                  VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                  VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                  VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
+  }
+  // The previous frame's tonemap and copy read what this frame's trace and tonemap overwrite.
+  memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                0);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR,
+                    rayTracingPipeline_->handle());
+  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
+                          &descriptorSet_, 0, nullptr);
+  rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                VK_ACCESS_SHADER_WRITE_BIT,
+                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
+  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
+                          &descriptorSet_, 0, nullptr);
+  vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
+  if (readback) {
+    imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_GENERAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {options_.width, options_.height, 1};
+    vkCmdCopyImageToBuffer(commands, outputImage_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback_.handle(), 1, &region);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+    // Back to GENERAL for the next frame's tonemap, after the copy has read it.
+    imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+  }
+}
+
+FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
+  writeFrameUniforms(frame);
+  const gpu::FrameCounters zero{};
+  counters_.write(&zero, sizeof zero);
+
+  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
+  recordFrame(commands_, readback);
+  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+
+  const auto start = std::chrono::steady_clock::now();
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands_;
+  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, frameDone_), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, UINT64_MAX),
+          "vkWaitForFences");
+  const auto end = std::chrono::steady_clock::now();
+  vkCheck(vkResetFences(context_.device(), 1, &frameDone_), "vkResetFences");
+
+  FrameStats stats;
+  stats.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
+  gpu::FrameCounters counters{};
+  counters_.read(&counters, sizeof counters);
+  stats.primaryRays = counters.primaryRays;
+  stats.shadowRays = counters.shadowRays;
+  if (readback) {
+    pixels_.resize(readback_.size());
+    readback_.read(pixels_.data(), pixels_.size());
+  }
+  return stats;
+}
+
+}  // namespace render

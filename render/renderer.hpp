@@ -1,0 +1,93 @@
+#pragma once
+// Draws a SceneDesc with the ray tracing pipeline: trace -> tonemap -> (optional) readback.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "render/acceleration_structure.hpp"
+#include "render/buffer.hpp"
+#include "render/scene_desc.hpp"
+
+namespace render {
+
+class Context;
+class ShaderCompiler;
+class StorageImage;
+class RayTracingPipeline;
+
+struct RendererOptions {
+  uint32_t width = 320;
+  uint32_t height = 180;
+  // Launch rows are dealt to image rows in this many interleaved groups (1 = off), so a CPU
+  // driver's contiguous per-thread blocks each get a share of every part of the image.
+  uint32_t rowGroups = 8;
+};
+
+struct FrameStats {
+  double milliseconds = 0.0;  // host time from submit to completion
+  uint64_t primaryRays = 0;   // counted by the ray-gen shader
+  uint64_t shadowRays = 0;
+  uint64_t rays() const { return primaryRays + shadowRays; }
+};
+
+class Renderer {
+ public:
+  Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
+           const RendererOptions& options);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Renders one frame and waits for it. With `readback`, pixels() holds the result.
+  FrameStats renderFrame(const FrameDesc& frame, bool readback = true);
+
+  // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
+  void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
+
+  // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
+  const std::vector<uint8_t>& pixels() const { return pixels_; }
+  uint32_t width() const { return options_.width; }
+  uint32_t height() const { return options_.height; }
+  size_t triangleCount() const { return triangleCount_; }
+
+ private:
+  void createDescriptors();
+  void createPipelines(ShaderCompiler& compiler);
+  void writeFrameUniforms(const FrameDesc& frame);
+  void recordFrame(VkCommandBuffer commands, bool readback);
+
+  const Context& context_;
+  RendererOptions options_;
+  uint32_t lightCount_ = 0;
+  size_t triangleCount_ = 0;
+  EnvironmentDesc environment_;
+
+  Buffer vertices_;
+  Buffer indices_;
+  Buffer instances_;
+  Buffer materials_;
+  Buffer lights_;
+  Buffer frameUniforms_;
+  Buffer counters_;
+  Buffer readback_;
+  std::vector<AccelerationStructure> bottomLevels_;
+  std::unique_ptr<TopLevel> topLevel_;
+  std::vector<glm::mat4> pendingTransforms_;
+  std::unique_ptr<StorageImage> hdrImage_;
+  std::unique_ptr<StorageImage> outputImage_;
+
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
+  VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
+  std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
+  VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;
+  VkCommandBuffer commands_ = VK_NULL_HANDLE;
+  VkFence frameDone_ = VK_NULL_HANDLE;
+  std::vector<uint8_t> pixels_;
+};
+
+}  // namespace render

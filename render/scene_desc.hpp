@@ -1,0 +1,82 @@
+#pragma once
+// Plain descriptions that cross from the game into the renderer. No Vulkan here.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace render {
+
+struct Vertex {
+  glm::vec3 position{0.0f};
+  glm::vec3 normal{0.0f, 1.0f, 0.0f};
+};
+
+struct MeshData {
+  std::string name;
+  std::vector<Vertex> vertices;
+  std::vector<uint32_t> indices;  // three per triangle, counter-clockwise front faces
+};
+
+// Colours are linear (already converted from the sRGB the author wrote).
+struct MaterialDesc {
+  glm::vec3 baseColor{0.8f};  // diffuse albedo
+  float specular = 0.0f;      // Blinn-Phong lobe weight in [0, 1]
+  float roughness = 0.5f;     // (0, 1]; mapped to the Blinn-Phong exponent 2/r^4 - 2
+  glm::vec3 emissive{0.0f};   // emitted radiance, added unlit
+};
+
+struct InstanceDesc {
+  uint32_t mesh = 0;
+  uint32_t material = 0;
+  glm::mat4 objectToWorld{1.0f};
+};
+
+enum class LightType : uint32_t {
+  Point = 0,        // intensity: radiant intensity in W/sr (irradiance = I cos / d^2)
+  Directional = 1,  // intensity: irradiance in W/m^2 on a surface facing the light
+};
+
+struct LightDesc {
+  LightType type = LightType::Point;
+  glm::vec3 position{0.0f};                 // point lights
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the way the light travels
+  glm::vec3 color{1.0f};                    // linear, multiplies intensity
+  float intensity = 1.0f;
+};
+
+struct EnvironmentDesc {
+  glm::vec3 skyZenith{0.0f};   // linear radiance seen straight up
+  glm::vec3 skyHorizon{0.0f};  // linear radiance seen at and below the horizon
+  glm::vec3 ambient{0.0f};     // linear irradiance/pi added to every surface, unshadowed
+};
+
+struct SceneDesc {
+  std::vector<MeshData> meshes;
+  std::vector<MaterialDesc> materials;
+  std::vector<InstanceDesc> instances;
+  std::vector<LightDesc> lights;
+  EnvironmentDesc environment;
+};
+
+struct CameraDesc {
+  glm::vec3 position{0.0f};
+  float yawDegrees = 0.0f;    // 0 looks along -Z, positive turns left (towards -X)
+  float pitchDegrees = 0.0f;  // positive looks up
+  float verticalFovDegrees = 60.0f;
+};
+
+enum class Tonemap : uint32_t {
+  Identity = 0,  // exposure, then clamp to [0, 1]: tests compute expected bytes from this
+  Aces = 1,      // Narkowicz's fit of the ACES filmic curve, after exposure
+};
+
+struct FrameDesc {
+  CameraDesc camera;
+  float exposure = 1.0f;  // linear multiplier applied before the tonemap
+  Tonemap tonemap = Tonemap::Aces;
+  uint32_t frameIndex = 0;
+};
+
+}  // namespace render

@@ -1,0 +1,33 @@
+#pragma once
+// A 2D image the shaders read and write, kept in VK_IMAGE_LAYOUT_GENERAL.
+#include <string>
+
+#include <vulkan/vulkan.h>
+
+namespace render {
+
+class Context;
+
+class StorageImage {
+ public:
+  StorageImage(const Context& context, uint32_t width, uint32_t height, VkFormat format,
+               VkImageUsageFlags extraUsage, const std::string& name);
+  ~StorageImage();
+  StorageImage(const StorageImage&) = delete;
+  StorageImage& operator=(const StorageImage&) = delete;
+
+  VkImage image() const { return image_; }
+  VkImageView view() const { return view_; }
+  uint32_t width() const { return width_; }
+  uint32_t height() const { return height_; }
+
+ private:
+  VkDevice device_;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+  uint32_t width_;
+  uint32_t height_;
+};
+
+}  // namespace render

@@ -1,0 +1,14 @@
+// The scene as the ray tracing stages see it.
+layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT sceneTlas;
+layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
+  GpuInstance instances[];
+};
+layout(set = 0, binding = BINDING_MATERIALS, std430) readonly buffer MaterialBlock {
+  GpuMaterial materials[];
+};
+layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBlock { GpuLight lights[]; };
+layout(set = 0, binding = BINDING_VERTICES, std430) readonly buffer VertexBlock {
+  float vertexFloats[];
+};
+layout(set = 0, binding = BINDING_INDICES, std430) readonly buffer IndexBlock { uint indices[]; };
+layout(set = 0, binding = BINDING_COUNTERS, std430) buffer CounterBlock { FrameCounters counters; };

@@ -1,0 +1,75 @@
+// Structs that cross between C++ and GLSL: defined once here. The C++ side checks sizes and
+// offsets with static_assert (render/gpu_types.hpp). std430/std140-compatible: vec4-sized rows.
+#ifndef SIGHTLINE_SHARED_TYPES_H
+#define SIGHTLINE_SHARED_TYPES_H
+
+#ifdef __cplusplus
+#include <cstdint>
+#include <glm/glm.hpp>
+namespace render::gpu {
+using vec4 = glm::vec4;
+using uvec4 = glm::uvec4;
+using uint = uint32_t;
+#endif
+
+// Binding numbers of descriptor set 0, shared by the ray tracing and compute pipelines.
+#define BINDING_TLAS 0
+#define BINDING_HDR_IMAGE 1
+#define BINDING_OUTPUT_IMAGE 2
+#define BINDING_FRAME 3
+#define BINDING_INSTANCES 4
+#define BINDING_MATERIALS 5
+#define BINDING_LIGHTS 6
+#define BINDING_VERTICES 7
+#define BINDING_INDICES 8
+#define BINDING_COUNTERS 9
+
+#define LIGHT_POINT 0u
+#define LIGHT_DIRECTIONAL 1u
+
+#define TONEMAP_IDENTITY 0u
+#define TONEMAP_ACES 1u
+
+// Floats per vertex in the vertex buffer: position xyz, normal xyz.
+#define VERTEX_FLOATS 6
+
+struct FrameUniforms {
+  vec4 cameraPosition;  // xyz
+  vec4 cameraRight;     // xyz: right * tan(fov/2) * aspect
+  vec4 cameraUp;        // xyz: up * tan(fov/2)
+  vec4 cameraForward;   // xyz: unit forward
+  vec4 skyZenith;       // linear radiance
+  vec4 skyHorizon;      // linear radiance
+  vec4 ambient;         // linear radiance of a uniform, unshadowed environment
+  uvec4 sizeFrameLights;       // width, height, frame index, light count
+  vec4 exposureTonemap;        // x: exposure, y: tonemap mode (as float), z: row groups
+};
+
+struct GpuInstance {
+  uvec4 geometry;  // x: first index, y: vertex offset, z: material, w: unused
+};
+
+struct GpuMaterial {
+  vec4 baseColorSpecular;  // rgb: linear albedo, a: specular weight
+  vec4 emissiveRoughness;  // rgb: linear emitted radiance, a: roughness
+};
+
+struct GpuLight {
+  vec4 positionType;       // xyz: position (point), w: LIGHT_* as float
+  vec4 direction;          // xyz: unit direction light travels (directional)
+  vec4 radiantIntensity;   // rgb: colour * intensity (W/sr for point, W/m^2 directional)
+};
+
+// Counters the ray-gen shader adds into; integers so sums do not depend on order.
+struct FrameCounters {
+  uint primaryRays;
+  uint shadowRays;
+  uint reserved0;
+  uint reserved1;
+};
+
+#ifdef __cplusplus
+}  // namespace render::gpu
+#endif
+
+#endif
