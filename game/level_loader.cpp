@@ -113,16 +113,13 @@ class LevelParser {
 
   Level parse() {
     if (text_.size() > kMaxLevelFileBytes) {
-      throw LevelError(file_.string() + ": level file is larger than the 16 MiB limit (" +
-                       std::to_string(text_.size()) + " bytes)");
+      throw LevelError(file_.string() + ": level file is larger than the 16 MiB limit");
     }
     Json root;
     try {
       root = Json::parse(text_);
-    } catch (const Json::parse_error& error) {
-      const SourcePosition at = positionOfParseError(text_, error.byte);
-      throw LevelError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                       std::to_string(at.column) + ": invalid JSON: " + parseErrorReason(error));
+    } catch (const Json::exception&) {
+      failInvalidJson();
     }
     positions_ = JsonPositions::scan(text_);
     if (const auto& duplicate = positions_.firstDuplicateKey()) {
@@ -177,12 +174,60 @@ class LevelParser {
  private:
   // ----- messages -----
 
-  static std::string parseErrorReason(const Json::parse_error& error) {
-    // what() reads "[json.exception.parse_error.101] parse error at line 1, column 7: <reason>".
-    const std::string what = error.what();
-    const std::size_t prefix = what.find("parse error");
-    const std::size_t colon = what.find(": ", prefix == std::string::npos ? 0 : prefix);
-    return colon == std::string::npos ? what : what.substr(colon + 2);
+  // Collects the first error of a SAX parse. Json::parse throws parse_error for syntax errors,
+  // which carries a position, but out_of_range (a number too large) without one; the SAX
+  // interface reports both with a position.
+  struct FirstJsonError : nlohmann::json_sax<Json> {
+    std::size_t bytesRead = 0;
+    std::string lastToken;
+    std::string what;
+    bool isSyntaxError = true;
+
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t position, const std::string& token,
+                     const nlohmann::detail::exception& error) override {
+      bytesRead = position;
+      lastToken = token;
+      what = error.what();
+      isSyntaxError = dynamic_cast<const nlohmann::detail::parse_error*>(&error) != nullptr;
+      return false;
+    }
+  };
+
+  [[noreturn]] void failInvalidJson() const {
+    FirstJsonError error;
+    Json::sax_parse(text_, &error);
+    // A syntax error stops at the offending byte; a number that overflows is reported after
+    // its token was read, so point at the token's start instead.
+    const SourcePosition at =
+        error.isSyntaxError ? positionOfParseError(text_, error.bytesRead)
+                            : positionOfOffset(text_, error.bytesRead >= error.lastToken.size()
+                                                          ? error.bytesRead - error.lastToken.size()
+                                                          : 0);
+    // what() reads "[json.exception.parse_error.101] parse error at line 1, column 7: <reason>"
+    // or "[json.exception.out_of_range.406] <reason>".
+    std::string reason = error.what;
+    if (const std::size_t prefixEnd = reason.find("] "); prefixEnd != std::string::npos) {
+      reason.erase(0, prefixEnd + 2);
+    }
+    if (reason.rfind("parse error", 0) == 0) {
+      if (const std::size_t colon = reason.find(": "); colon != std::string::npos) {
+        reason.erase(0, colon + 2);
+      }
+    }
+    throw LevelError(file_.string() + ":" + std::to_string(at.line) + ":" +
+                     std::to_string(at.column) + ": invalid JSON: " + reason);
   }
 
   [[noreturn]] void failAt(SourcePosition at, const std::string& pointer,
@@ -592,7 +637,7 @@ Level loadLevel(const fs::path& file, const LevelLoadOptions& options) {
   std::error_code error;
   std::ifstream stream;
   if (fs::is_regular_file(file, error)) stream.open(file, std::ios::binary);
-  if (!stream) throw LevelError(file.string() + ": cannot open level file");
+  if (!stream.is_open()) throw LevelError(file.string() + ": cannot open level file");
 
   // Read in chunks and stop past the limit, so a huge file is never held in memory whole.
   std::string text;

@@ -432,7 +432,7 @@ TEST(JsonPositions, scanner_finds_values_keys_and_array_elements) {
   expectAt(positions.keyAt("/a"), 2, 3);
   expectAt(positions.valueAt("/a/0"), 2, 9);
   expectAt(positions.valueAt("/a/1"), 2, 12);
-  expectAt(positions.valueAt("/a/1/b~0~1c"), 2, 22);
+  expectAt(positions.valueAt("/a/1/b~0~1c"), 2, 21);
   expectAt(positions.valueAt("/d"), 3, 8);
   expectAt(positions.valueAt("/d/missing"), 3, 8);  // falls back to the enclosing value
   EXPECT_FALSE(positions.firstDuplicateKey().has_value());
@@ -488,7 +488,7 @@ TEST(LevelErrors, missing_required_key_points_at_its_object) {
 TEST(LevelErrors, entity_with_unknown_mesh_lists_the_known_meshes) {
   const std::string text = replaced(kMinimalLevel, R"("mesh": "cube")", R"("mesh": "cub")");
   EXPECT_EQ(parseError(text),
-            "levels/test.json:7:35: /entities/crate/mesh: unknown mesh \"cub\"; known meshes: "
+            "levels/test.json:7:34: /entities/crate/mesh: unknown mesh \"cub\"; known meshes: "
             "\"cube\"");
 }
 
@@ -502,10 +502,10 @@ TEST(LevelErrors, entity_with_unknown_material_lists_the_known_materials) {
 
 TEST(LevelErrors, colour_errors_say_what_a_colour_is) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, "[0.5, 0.5, 0.5]", "\"#12345\"")),
-            "levels/test.json:5:34: /materials/grey/color: expected a colour: [r, g, b] with "
+            "levels/test.json:5:35: /materials/grey/color: expected a colour: [r, g, b] with "
             "components in [0, 1] or a string \"#rrggbb\", got \"#12345\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, "[0.5, 0.5, 0.5]", "[0.5, 1.5, 0.5]")),
-            "levels/test.json:5:40: /materials/grey/color/1: expected a number in [0, 1], got 1.5");
+            "levels/test.json:5:41: /materials/grey/color/1: expected a number in [0, 1], got 1.5");
 }
 
 TEST(LevelErrors, number_rules_name_their_range) {
@@ -518,9 +518,8 @@ TEST(LevelErrors, number_rules_name_their_range) {
   EXPECT_NE(cameraError(R"({"position": [0, 1, 5], "fov_degrees": 180})")
                 .find("/camera/fov_degrees: expected a number in (0, 179], got 180"),
             std::string::npos);
-  EXPECT_NE(cameraError(R"({"position": [0, 1e999, 5]})")
-                .find("/camera/position/1: expected a number, got null"),
-            std::string::npos);
+  EXPECT_EQ(cameraError(R"({"position": [0, 1e999, 5]})"),
+            "levels/test.json:4:30: invalid JSON: number overflow parsing '1e999'");
   EXPECT_NE(cameraError(R"({"position": [0, 1e300, 5]})")
                 .find("/camera/position/1: expected a 32-bit float, got 1e+300"),
             std::string::npos);
@@ -559,7 +558,7 @@ TEST(LevelErrors, mesh_must_have_exactly_one_shape) {
     return parseError(replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", mesh));
   };
   EXPECT_EQ(meshError(R"({"box": {"size": [1, 1, 1]}, "sphere": {"radius": 1}})"),
-            "levels/test.json:6:23: /meshes/cube: expected exactly one of \"box\", \"sphere\", "
+            "levels/test.json:6:22: /meshes/cube: expected exactly one of \"box\", \"sphere\", "
             "\"plane\", \"cylinder\", \"gltf\", got \"box\", \"sphere\"");
   EXPECT_NE(meshError("{}").find("/meshes/cube: expected exactly one of"), std::string::npos);
   EXPECT_NE(meshError(R"({"box": {"size": [1, 1, 1]}, "mesh": "Body"})")
@@ -621,8 +620,9 @@ TEST_F(TempDirTest, loader_reports_files_it_cannot_open_or_that_are_too_large) {
   EXPECT_EQ(loadError(root_), root_.string() + ": cannot open level file");
   const fs::path huge = root_ / "huge.json";
   writeFile(huge, std::string((16u << 20) + 1, ' '));
-  EXPECT_EQ(
-      loadError(huge).rfind(huge.string() + ": level file is larger than the 16 MiB limit", 0), 0u);
+  EXPECT_EQ(loadError(huge), huge.string() + ": level file is larger than the 16 MiB limit");
+  EXPECT_EQ(parseError(std::string((16u << 20) + 1, ' ')),
+            "levels/test.json: level file is larger than the 16 MiB limit");
 }
 
 TEST_F(TempDirTest, loader_reads_a_level_file_from_disk) {
@@ -715,6 +715,25 @@ TEST_F(TempDirTest, gltf_with_embedded_buffer_and_byte_indices_loads) {
   expectOutwardFacing(mesh);
 }
 
+TEST_F(TempDirTest, glb_with_its_buffer_in_the_binary_chunk_loads) {
+  const GltfFile file = makeGltf(game::primitives::box(glm::vec3(1)), IndexType::U16);
+  std::string json = file.document.dump();  // no buffer uri: the BIN chunk is buffer 0
+  json.resize((json.size() + 3) / 4 * 4, ' ');
+  std::string bin = file.buffer;
+  bin.resize((bin.size() + 3) / 4 * 4, '\0');
+  std::string glb = "glTF";
+  appendBytes(glb, uint32_t{2});
+  appendBytes(glb, static_cast<uint32_t>(12 + 8 + json.size() + 8 + bin.size()));
+  appendBytes(glb, static_cast<uint32_t>(json.size()));
+  glb += "JSON" + json;
+  appendBytes(glb, static_cast<uint32_t>(bin.size()));
+  glb += std::string("BIN\0", 4) + bin;
+  writeFile(root_ / "box.glb", glb);
+  const render::MeshData mesh = game::loadGltfMesh(root_ / "box.glb", root_);
+  EXPECT_EQ(mesh.indices.size(), 36u);
+  expectOutwardFacing(mesh);
+}
+
 TEST_F(TempDirTest, gltf_without_indices_gets_flat_normals) {
   render::MeshData unindexed;
   const render::MeshData box = game::primitives::box(glm::vec3(2));
@@ -777,7 +796,7 @@ TEST_F(TempDirTest, broken_gltf_files_are_reported_with_their_name) {
                               file.buffer[at + 1] = 0;
                             }),
             prefix +
-                "mesh \"Cube\" primitive 0 indices index 99 (at 5) is out of range: the "
+                "mesh \"Cube\" primitive 0 index 99 (at 5) is out of range: the "
                 "primitive has 24 vertices");
   EXPECT_EQ(
       brokenGltfError(
@@ -785,11 +804,10 @@ TEST_F(TempDirTest, broken_gltf_files_are_reported_with_their_name) {
       prefix +
           "mesh \"Cube\" primitive 0 has mode 1 (LINES); only TRIANGLES (4) is "
           "supported");
-  EXPECT_EQ(
-      brokenGltfError(
-          root_,
-          [](GltfFile& file) { file.document["meshes"][0]["primitives"][0]["indices"] = 7; }),
-      prefix + "mesh \"Cube\" primitive 0 indices refers to accessor 7, which does not exist");
+  EXPECT_EQ(brokenGltfError(
+                root_,
+                [](GltfFile& file) { file.document["meshes"][0]["primitives"][0]["indices"] = 7; }),
+            prefix + "cannot load glTF: primitive indices accessor out of bounds");
   EXPECT_EQ(
       brokenGltfError(root_, [](GltfFile& file) { file.document["accessors"][0]["count"] = 25; }),
       prefix +
