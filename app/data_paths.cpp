@@ -37,7 +37,8 @@ std::vector<fs::path> shippedLevels(const fs::path& dataRoot) {
   std::error_code error;
   for (const auto& entry : fs::directory_iterator(dataRoot / "levels", error)) {
     const fs::path& path = entry.path();
-    if (path.extension() == ".json" && path.filename().string().find(".schema.") == std::string::npos)
+    if (path.extension() == ".json" &&
+        path.filename().string().find(".schema.") == std::string::npos)
       levels.push_back(path);
   }
   std::sort(levels.begin(), levels.end());

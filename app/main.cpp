@@ -100,9 +100,12 @@ Options parseOptions(int argc, char** argv) {
       options.frames = parseCount("--frames", value(), 1, 1000000);
     } else if (argument == "--tonemap") {
       const std::string mode = value();
-      if (mode == "aces") options.tonemap = render::Tonemap::Aces;
-      else if (mode == "identity") options.tonemap = render::Tonemap::Identity;
-      else throw UsageError("--tonemap: expected aces or identity, got '" + mode + "'");
+      if (mode == "aces")
+        options.tonemap = render::Tonemap::Aces;
+      else if (mode == "identity")
+        options.tonemap = render::Tonemap::Identity;
+      else
+        throw UsageError("--tonemap: expected aces or identity, got '" + mode + "'");
     } else if (argument == "--exposure") {
       const std::string text = value();
       char* end = nullptr;
@@ -183,8 +186,8 @@ int renderLevel(const fs::path& levelFile, const Options& options, const fs::pat
     times.push_back(stats.milliseconds);
   }
   render::writePng(out, {renderer.width(), renderer.height(), renderer.pixels()});
-  const double shown = frames > 1 ? median(std::vector<double>(times.begin() + 1, times.end()))
-                                  : times.front();
+  const double shown =
+      frames > 1 ? median(std::vector<double>(times.begin() + 1, times.end())) : times.front();
   std::printf("%s: %ux%u on %s (%s)\n", level.name.c_str(), renderer.width(), renderer.height(),
               context.deviceInfo().name.c_str(), context.deviceInfo().driver.c_str());
   std::printf("frame time %.2f ms%s, %.2f Mrays/s (%llu primary + %llu shadow rays)\n", shown,

@@ -16,7 +16,8 @@ constexpr VkBufferUsageFlags kScratchUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
 
 VkAccelerationStructureGeometryKHR triangleGeometry(const TriangleGeometry& mesh) {
-  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  VkAccelerationStructureGeometryKHR geometry{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
   geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;  // no any-hit call for opaque surfaces
   auto& triangles = geometry.geometry.triangles;
@@ -69,8 +70,9 @@ AccelerationStructure::AccelerationStructure(const Context& context,
   createInfo.buffer = storage_.handle();
   createInfo.size = size;
   createInfo.type = type;
-  vkCheck(context.rt().createAccelerationStructure(context.device(), &createInfo, nullptr, &handle_),
-          "vkCreateAccelerationStructureKHR");
+  vkCheck(
+      context.rt().createAccelerationStructure(context.device(), &createInfo, nullptr, &handle_),
+      "vkCreateAccelerationStructureKHR");
   context.setName(handle_, VK_OBJECT_TYPE_ACCELERATION_STRUCTURE_KHR, name);
   VkAccelerationStructureDeviceAddressInfoKHR addressInfo{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
@@ -78,7 +80,9 @@ AccelerationStructure::AccelerationStructure(const Context& context,
   address_ = context.rt().getAccelerationStructureAddress(context.device(), &addressInfo);
 }
 
-AccelerationStructure::~AccelerationStructure() { release(); }
+AccelerationStructure::~AccelerationStructure() {
+  release();
+}
 
 AccelerationStructure::AccelerationStructure(AccelerationStructure&& other) noexcept {
   *this = std::move(other);
@@ -163,9 +167,8 @@ std::vector<AccelerationStructure> buildBottomLevels(const Context& context,
                                       VK_QUERY_TYPE_ACCELERATION_STRUCTURE_COMPACTED_SIZE_KHR,
                                       queries, 0);
     });
-    vkCheck(vkGetQueryPoolResults(context.device(), queries, 0, count,
-                                  count * sizeof(VkDeviceSize), compactedSizes.data(),
-                                  sizeof(VkDeviceSize),
+    vkCheck(vkGetQueryPoolResults(context.device(), queries, 0, count, count * sizeof(VkDeviceSize),
+                                  compactedSizes.data(), sizeof(VkDeviceSize),
                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
             "vkGetQueryPoolResults");
   } catch (...) {
@@ -182,7 +185,8 @@ std::vector<AccelerationStructure> buildBottomLevels(const Context& context,
   }
   context.submitAndWait([&](VkCommandBuffer commands) {
     for (uint32_t i = 0; i < count; ++i) {
-      VkCopyAccelerationStructureInfoKHR copy{VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR};
+      VkCopyAccelerationStructureInfoKHR copy{
+          VK_STRUCTURE_TYPE_COPY_ACCELERATION_STRUCTURE_INFO_KHR};
       copy.src = built[i].handle();
       copy.dst = compacted[i].handle();
       copy.mode = VK_COPY_ACCELERATION_STRUCTURE_MODE_COMPACT_KHR;
@@ -196,11 +200,12 @@ TopLevel::TopLevel(const Context& context, std::span<const TlasInstance> instanc
     : context_(&context), instanceCount_(static_cast<uint32_t>(instances.size())) {
   const VkDeviceSize instanceBytes =
       std::max<VkDeviceSize>(instances.size(), 1) * sizeof(VkAccelerationStructureInstanceKHR);
-  instanceBuffer_ = Buffer(context, instanceBytes, kBuildInputUsage, MemoryUse::Upload,
-                           "tlas instances");
+  instanceBuffer_ =
+      Buffer(context, instanceBytes, kBuildInputUsage, MemoryUse::Upload, "tlas instances");
   writeInstances(instances);
 
-  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  VkAccelerationStructureGeometryKHR geometry{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
   geometry.geometry.instances.sType =
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
@@ -254,7 +259,8 @@ void TopLevel::recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4>
 }
 
 void TopLevel::record(VkCommandBuffer commands, bool update) {
-  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  VkAccelerationStructureGeometryKHR geometry{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
   geometry.geometry.instances.sType =
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;

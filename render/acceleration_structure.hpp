@@ -4,8 +4,8 @@
 #include <span>
 #include <vector>
 
-#include <glm/glm.hpp>
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 #include "render/buffer.hpp"
 

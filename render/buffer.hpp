@@ -31,7 +31,7 @@ class Buffer {
   VkBuffer handle() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
   VkDeviceAddress address() const { return address_; }  // 0 without SHADER_DEVICE_ADDRESS usage
-  void* mapped() const { return mapped_; }                // null for DeviceOnly
+  void* mapped() const { return mapped_; }              // null for DeviceOnly
 
   void write(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
   template <typename T>

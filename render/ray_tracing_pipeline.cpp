@@ -85,10 +85,10 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
           "vkGetRayTracingShaderGroupHandlesKHR");
   // Over-allocate so the table's start can be aligned to the base alignment.
   const VkDeviceSize baseAlignment = properties.shaderGroupBaseAlignment;
-  sbt_ = Buffer(context, layout_.totalSize + baseAlignment,
-                VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
-                    VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
-                MemoryUse::Upload, "shader binding table");
+  sbt_ = Buffer(
+      context, layout_.totalSize + baseAlignment,
+      VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR | VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT,
+      MemoryUse::Upload, "shader binding table");
   const VkDeviceAddress base = alignUp(sbt_.address(), baseAlignment);
   const VkDeviceSize baseOffset = base - sbt_.address();
   auto writeHandle = [&](uint32_t group, uint64_t offset) {

@@ -83,10 +83,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
       if (index >= mesh.vertices.size())
         throw RenderError("mesh '" + mesh.name + "' has an index past its vertices");
     }
-    ranges.push_back({static_cast<uint32_t>(allIndices.size()),
-                      static_cast<uint32_t>(allVertices.size()),
-                      static_cast<uint32_t>(mesh.indices.size()),
-                      static_cast<uint32_t>(mesh.vertices.size())});
+    ranges.push_back(
+        {static_cast<uint32_t>(allIndices.size()), static_cast<uint32_t>(allVertices.size()),
+         static_cast<uint32_t>(mesh.indices.size()), static_cast<uint32_t>(mesh.vertices.size())});
     allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
     allIndices.insert(allIndices.end(), mesh.indices.begin(), mesh.indices.end());
   }
@@ -96,7 +95,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
     if (instance.mesh >= ranges.size() || instance.material >= scene.materials.size())
       throw RenderError("an instance refers to a mesh or material that does not exist");
     const MeshRange& range = ranges[instance.mesh];
-    gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0)});
+    gpuInstances.push_back(
+        {glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0)});
     triangleCount_ += range.indexCount / 3;
   }
   std::vector<gpu::GpuMaterial> gpuMaterials;
@@ -110,7 +110,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
                                     ? glm::normalize(light.direction)
                                     : glm::vec3(0.0f, -1.0f, 0.0f);
     gpuLights.push_back({glm::vec4(light.position, static_cast<float>(light.type)),
-                         glm::vec4(direction, 0.0f), glm::vec4(light.color * light.intensity, 0.0f)});
+                         glm::vec4(direction, 0.0f),
+                         glm::vec4(light.color * light.intensity, 0.0f)});
   }
   lightCount_ = static_cast<uint32_t>(gpuLights.size());
 
@@ -243,7 +244,7 @@ void Renderer::createDescriptors() {
   for (size_t i = 0; i < buffers.size(); ++i) {
     bufferInfos[i] = {buffers[i].second->handle(), 0, VK_WHOLE_SIZE};
     write(buffers[i].first, buffers[i].first == BINDING_FRAME ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                               : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
+                                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
         .pBufferInfo = &bufferInfos[i];
   }
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
@@ -262,8 +263,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler) {
   shaders.shadowMiss = compiler.compile("shadow.rmiss").spirv;
   shaders.surfaceClosestHit = compiler.compile("surface.rchit").spirv;
   // Only ray-gen traces (primary and shadow rays), so one level of recursion is enough.
-  rayTracingPipeline_ =
-      std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, shaders, 1);
+  rayTracingPipeline_ = std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, shaders, 1);
 
   const std::vector<uint32_t> tonemap = compiler.compile("tonemap.comp").spirv;
   VkShaderModule module = createShaderModule(context_, tonemap, "tonemap");
@@ -309,7 +309,8 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
   uniforms.skyZenith = glm::vec4(environment_.skyZenith, 0.0f);
   uniforms.skyHorizon = glm::vec4(environment_.skyHorizon, 0.0f);
   uniforms.ambient = glm::vec4(environment_.ambient, 0.0f);
-  uniforms.sizeFrameLights = glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
+  uniforms.sizeFrameLights =
+      glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
   frameUniforms_.write(&uniforms, sizeof uniforms);
@@ -336,8 +337,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
                           &descriptorSet_, 0, nullptr);
   rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
-  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                VK_ACCESS_SHADER_WRITE_BIT,
+  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);

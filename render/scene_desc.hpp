@@ -40,9 +40,9 @@ enum class LightType : uint32_t {
 
 struct LightDesc {
   LightType type = LightType::Point;
-  glm::vec3 position{0.0f};                 // point lights
+  glm::vec3 position{0.0f};                // point lights
   glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the way the light travels
-  glm::vec3 color{1.0f};                    // linear, multiplies intensity
+  glm::vec3 color{1.0f};                   // linear, multiplies intensity
   float intensity = 1.0f;
 };
 

@@ -70,8 +70,7 @@ class RecordingIncluder : public glslang::TShader::Includer {
  public:
   explicit RecordingIncluder(fs::path root) : root_(std::move(root)) {}
 
-  IncludeResult* includeLocal(const char* headerName, const char* includerName,
-                              size_t) override {
+  IncludeResult* includeLocal(const char* headerName, const char* includerName, size_t) override {
     const fs::path candidate = fs::path(includerName).parent_path() / headerName;
     if (!isInside(root_, candidate)) return nullptr;
     auto text = readText(candidate);
@@ -170,7 +169,8 @@ CompiledShader ShaderCompiler::compile(const fs::path& file, const ShaderDefines
   const fs::path cachePath =
       cacheDirectory_.empty() ? fs::path() : cacheDirectory_ / (std::string(keyText) + ".spv");
   if (!cachePath.empty()) {
-    if (auto cached = readText(cachePath); cached && cached->size() >= 20 && cached->size() % 4 == 0) {
+    if (auto cached = readText(cachePath);
+        cached && cached->size() >= 20 && cached->size() % 4 == 0) {
       result.spirv.resize(cached->size() / 4);
       std::memcpy(result.spirv.data(), cached->data(), cached->size());
       if (result.spirv[0] == kSpirvMagic) {

@@ -5,8 +5,8 @@
 
 namespace render {
 
-StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t height,
-                           VkFormat format, VkImageUsageFlags extraUsage, const std::string& name)
+StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t height, VkFormat format,
+                           VkImageUsageFlags extraUsage, const std::string& name)
     : device_(context.device()), width_(width), height_(height) {
   VkImageCreateInfo imageInfo{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   imageInfo.imageType = VK_IMAGE_TYPE_2D;

@@ -34,15 +34,15 @@ using uint = uint32_t;
 #define VERTEX_FLOATS 6
 
 struct FrameUniforms {
-  vec4 cameraPosition;  // xyz
-  vec4 cameraRight;     // xyz: right * tan(fov/2) * aspect
-  vec4 cameraUp;        // xyz: up * tan(fov/2)
-  vec4 cameraForward;   // xyz: unit forward
-  vec4 skyZenith;       // linear radiance
-  vec4 skyHorizon;      // linear radiance
-  vec4 ambient;         // linear radiance of a uniform, unshadowed environment
-  uvec4 sizeFrameLights;       // width, height, frame index, light count
-  vec4 exposureTonemap;        // x: exposure, y: tonemap mode (as float), z: row groups
+  vec4 cameraPosition;    // xyz
+  vec4 cameraRight;       // xyz: right * tan(fov/2) * aspect
+  vec4 cameraUp;          // xyz: up * tan(fov/2)
+  vec4 cameraForward;     // xyz: unit forward
+  vec4 skyZenith;         // linear radiance
+  vec4 skyHorizon;        // linear radiance
+  vec4 ambient;           // linear radiance of a uniform, unshadowed environment
+  uvec4 sizeFrameLights;  // width, height, frame index, light count
+  vec4 exposureTonemap;   // x: exposure, y: tonemap mode (as float), z: row groups
 };
 
 struct GpuInstance {
@@ -55,9 +55,9 @@ struct GpuMaterial {
 };
 
 struct GpuLight {
-  vec4 positionType;       // xyz: position (point), w: LIGHT_* as float
-  vec4 direction;          // xyz: unit direction light travels (directional)
-  vec4 radiantIntensity;   // rgb: colour * intensity (W/sr for point, W/m^2 directional)
+  vec4 positionType;      // xyz: position (point), w: LIGHT_* as float
+  vec4 direction;         // xyz: unit direction light travels (directional)
+  vec4 radiantIntensity;  // rgb: colour * intensity (W/sr for point, W/m^2 directional)
 };
 
 // Counters the ray-gen shader adds into; integers so sums do not depend on order.

@@ -27,7 +27,8 @@ std::string planeLevel(const std::string& colour, const std::string& lights,
          extraMeshes + R"(},
     "entities": {"floor": {"mesh": "plane", "material": "lambert"})" +
          extraEntities + R"(},
-    "lights": {)" + lights + R"(}
+    "lights": {)" +
+         lights + R"(}
   })";
 }
 
@@ -47,7 +48,8 @@ TEST_F(VulkanTest, lambert_plane_under_directional_light_matches_rho_e_over_pi) 
   EXPECT_EQ(expected, 167);
   for (uint32_t y = 0; y < image.height; ++y)
     for (uint32_t x = 0; x < image.width; ++x)
-      for (int c = 0; c < 3; ++c) ASSERT_NEAR(channel(image, x, y, c), expected, 1) << x << "," << y;
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(channel(image, x, y, c), expected, 1) << x << "," << y;
 }
 
 TEST_F(VulkanTest, exposure_scales_linear_radiance_before_encoding) {

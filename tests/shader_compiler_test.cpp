@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "render/shader_compiler.hpp"
+#include "vulkan_fixture.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -11,8 +12,9 @@ class ShaderCompilerTest : public ::testing::Test {
  protected:
   void SetUp() override {
     root_ = fs::temp_directory_path() /
-            ("sightline-shader-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-             "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+            ("sightline-shader-test-" +
+             std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+             ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::remove_all(root_);
     fs::create_directories(root_ / "shaders");
     write("shaders/common.glsl", "const float SCALE = 2.0;\n");
@@ -88,7 +90,7 @@ TEST_F(ShaderCompilerTest, include_outside_the_shader_directory_is_refused) {
 }
 
 TEST_F(ShaderCompilerTest, shipped_shaders_all_compile) {
-  render::ShaderCompiler shipped(fs::path(SIGHTLINE_SOURCE_DIR) / "shaders", root_ / "cache");
+  render::ShaderCompiler shipped(test::sourceDir() / "shaders", root_ / "cache");
   for (const char* file :
        {"raygen.rgen", "surface.rmiss", "shadow.rmiss", "surface.rchit", "tonemap.comp"}) {
     EXPECT_FALSE(shipped.compile(file).spirv.empty()) << file;

@@ -1,5 +1,6 @@
 #pragma once
 // One validated Vulkan context for all GPU tests; any validation message fails the test.
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -15,7 +16,9 @@
 
 namespace test {
 
-inline std::filesystem::path sourceDir() { return SIGHTLINE_SOURCE_DIR; }
+inline std::filesystem::path sourceDir() {
+  return SIGHTLINE_SOURCE_DIR;
+}
 
 class VulkanTest : public ::testing::Test {
  protected:
@@ -44,8 +47,7 @@ class VulkanTest : public ::testing::Test {
   static render::Rgba8Image renderLevelText(const std::string& json, uint32_t width,
                                             uint32_t height, render::Tonemap tonemap,
                                             float exposure = 1.0f) {
-    const game::Level level =
-        game::parseLevel(json, sourceDir() / "tests" / "inline_level.json");
+    const game::Level level = game::parseLevel(json, sourceDir() / "tests" / "inline_level.json");
     return renderLevel(level, width, height, tonemap, exposure);
   }
 
