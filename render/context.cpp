@@ -131,8 +131,9 @@ VkInstance createInstance(bool validate, bool* debugUtilsEnabled) {
   VkResult result = vkCreateInstance(&createInfo, nullptr, &instance);
   if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
     throw RenderError(
-        "no Vulkan driver found: install one with ray tracing (Debian 12: mesa-vulkan-drivers "
-        "from bookworm-backports, which scripts/setup.sh installs)");
+        "the Vulkan loader found no usable driver (VK_ERROR_INCOMPATIBLE_DRIVER): install one "
+        "with ray tracing (Debian 12: mesa-vulkan-drivers from bookworm-backports, which "
+        "scripts/setup.sh installs); VK_LOADER_DEBUG=error shows why a driver did not load");
   }
   vkCheck(result, "vkCreateInstance");
   return instance;
