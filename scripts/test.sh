@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test (validation layer on).
-# Usage: bash scripts/test.sh [default|asan]
+# Usage: bash scripts/test.sh [default|asan]   (no argument: both, default first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-preset="${1:-default}"
+presets=("$@")
+[ ${#presets[@]} -gt 0 ] || presets=(default asan)
 bash scripts/setup.sh
-cmake --preset "$preset" >/dev/null
-cmake --build --preset "$preset" -j "$(nproc)"
-ctest --preset "$preset" -j 1
+for preset in "${presets[@]}"; do
+  echo "== preset ${preset}"
+  cmake --preset "$preset" >/dev/null
+  cmake --build --preset "$preset" -j "$(nproc)"
+  ctest --preset "$preset"
+done
