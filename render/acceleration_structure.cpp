@@ -45,6 +45,37 @@ ScratchBuffer makeScratch(const Context& context, VkDeviceSize size, const std::
   return scratch;
 }
 
+VkTransformMatrixKHR toRowMajor3x4(const glm::mat4& objectToWorld) {
+  VkTransformMatrixKHR transform{};
+  for (int row = 0; row < 3; ++row)
+    for (int column = 0; column < 4; ++column)
+      transform.matrix[row][column] = objectToWorld[column][row];
+  return transform;
+}
+
+VkAccelerationStructureGeometryKHR instanceGeometry(VkDeviceAddress instances) {
+  VkAccelerationStructureGeometryKHR geometry{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry.geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry.geometry.instances.data.deviceAddress = instances;
+  return geometry;
+}
+
+// Fast to trace, and updatable in place when instances move.
+VkAccelerationStructureBuildGeometryInfoKHR topLevelBuildInfo(
+    const VkAccelerationStructureGeometryKHR* geometry) {
+  VkAccelerationStructureBuildGeometryInfoKHR info{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
+               VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+  info.geometryCount = 1;
+  info.pGeometries = geometry;
+  return info;
+}
+
 void structureBuildBarrier(VkCommandBuffer commands) {
   VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
   barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
@@ -204,18 +235,8 @@ TopLevel::TopLevel(const Context& context, std::span<const TlasInstance> instanc
       Buffer(context, instanceBytes, kBuildInputUsage, MemoryUse::Upload, "tlas instances");
   writeInstances(instances);
 
-  VkAccelerationStructureGeometryKHR geometry{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  geometry.geometry.instances.sType =
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-  VkAccelerationStructureBuildGeometryInfoKHR info{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-               VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
+  const VkAccelerationStructureGeometryKHR geometry = instanceGeometry(instanceBuffer_.address());
+  const VkAccelerationStructureBuildGeometryInfoKHR info = topLevelBuildInfo(&geometry);
   VkAccelerationStructureBuildSizesInfoKHR sizes{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
   context.rt().getBuildSizes(context.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
@@ -225,6 +246,7 @@ TopLevel::TopLevel(const Context& context, std::span<const TlasInstance> instanc
   ScratchBuffer scratch = makeScratch(
       context, std::max(sizes.buildScratchSize, sizes.updateScratchSize), "tlas scratch");
   scratch_ = std::move(scratch.buffer);
+  scratchAddress_ = scratch.alignedAddress;
   context.submitAndWait([&](VkCommandBuffer commands) { record(commands, false); });
 }
 
@@ -232,9 +254,7 @@ void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
   instances_.clear();
   for (const TlasInstance& instance : instances) {
     VkAccelerationStructureInstanceKHR record{};
-    for (int row = 0; row < 3; ++row)
-      for (int column = 0; column < 4; ++column)
-        record.transform.matrix[row][column] = instance.objectToWorld[column][row];
+    record.transform = toRowMajor3x4(instance.objectToWorld);
     record.instanceCustomIndex = instance.customIndex & 0xFFFFFF;
     record.mask = 0xFF;
     record.instanceShaderBindingTableRecordOffset = 0;
@@ -250,36 +270,20 @@ void TopLevel::recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4>
   if (objectToWorld.size() != instances_.size())
     throw RenderError("TopLevel::recordUpdate: instance count changed");
   for (size_t i = 0; i < instances_.size(); ++i)
-    for (int row = 0; row < 3; ++row)
-      for (int column = 0; column < 4; ++column)
-        instances_[i].transform.matrix[row][column] = objectToWorld[i][column][row];
+    instances_[i].transform = toRowMajor3x4(objectToWorld[i]);
   if (!instances_.empty())
     instanceBuffer_.write(instances_.data(), instances_.size() * sizeof(instances_[0]));
   record(commands, true);
 }
 
 void TopLevel::record(VkCommandBuffer commands, bool update) {
-  VkAccelerationStructureGeometryKHR geometry{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
-  geometry.geometry.instances.sType =
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
-  geometry.geometry.instances.data.deviceAddress = instanceBuffer_.address();
-  VkAccelerationStructureBuildGeometryInfoKHR info{
-      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
-  info.type = VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR;
-  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR |
-               VK_BUILD_ACCELERATION_STRUCTURE_ALLOW_UPDATE_BIT_KHR;
+  const VkAccelerationStructureGeometryKHR geometry = instanceGeometry(instanceBuffer_.address());
+  VkAccelerationStructureBuildGeometryInfoKHR info = topLevelBuildInfo(&geometry);
   info.mode = update ? VK_BUILD_ACCELERATION_STRUCTURE_MODE_UPDATE_KHR
                      : VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
   info.srcAccelerationStructure = update ? structure_.handle() : VK_NULL_HANDLE;
   info.dstAccelerationStructure = structure_.handle();
-  info.geometryCount = 1;
-  info.pGeometries = &geometry;
-  const VkDeviceSize alignment = std::max<VkDeviceSize>(
-      context_->accelerationStructureProperties().minAccelerationStructureScratchOffsetAlignment,
-      1);
-  info.scratchData.deviceAddress = alignUp(scratch_.address(), alignment);
+  info.scratchData.deviceAddress = scratchAddress_;
   VkAccelerationStructureBuildRangeInfoKHR range{};
   range.primitiveCount = instanceCount_;
   const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;

@@ -80,6 +80,7 @@ class TopLevel {
   std::vector<VkAccelerationStructureInstanceKHR> instances_;
   Buffer instanceBuffer_;
   Buffer scratch_;
+  VkDeviceAddress scratchAddress_ = 0;  // aligned for the device
   AccelerationStructure structure_;
 };
 
