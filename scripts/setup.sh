@@ -26,15 +26,6 @@ if [ ! -r /etc/os-release ] || ! grep -q '^VERSION_CODENAME=bookworm' /etc/os-re
   manual_hint
   exit 1
 fi
-if [ "$(id -u)" -ne 0 ]; then
-  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
-    exec sudo -n -E bash "$0" "$@"
-  fi
-  echo "setup: installing packages needs root (run it as root or with sudo)." >&2
-  manual_hint
-  exit 1
-fi
-
 export DEBIAN_FRONTEND=noninteractive
 
 mesa_version() { dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true; }
@@ -51,6 +42,15 @@ done
 if [ ${#missing[@]} -eq 0 ] && mesa_is_new_enough; then
   echo "setup: all packages present (mesa-vulkan-drivers $(mesa_version))."
   exit 0
+fi
+
+if [ "$(id -u)" -ne 0 ]; then
+  if command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
+    exec sudo -n -E bash "$0" "$@"
+  fi
+  echo "setup: installing ${missing[*]:-mesa-vulkan-drivers (>= ${mesa_min_version})} needs root (run it as root or with sudo)." >&2
+  manual_hint
+  exit 1
 fi
 
 # Derive bookworm-backports from the mirror this machine already uses (no host is named here).
