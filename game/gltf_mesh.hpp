@@ -1,19 +1,44 @@
 #pragma once
-// Loads triangle geometry from a glTF 2.0 file (.gltf or .glb) for use as a level mesh.
+// Loads a glTF 2.0 model (.gltf or .glb) for use as a level mesh.
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
 
 #include "render/scene_desc.hpp"
 
 namespace game {
 
-// Reads `file` and merges its triangle primitives into one mesh with positions and normals
-// (area-weighted normals are computed where the file has none).
-//  - `meshName` empty: every mesh instance reachable from the default scene's nodes, with the
-//    node transforms applied (every mesh, untransformed, if the file has no scenes).
-//  - `meshName` set: only the mesh of that name, in its own coordinates.
-// Every file tinygltf reads (the model itself, buffers, images) must resolve inside
-// `allowedRoot`. Images are never decoded. Throws game::LevelError("<file>: <problem>").
+// The model's own material (its first primitive's), mapped to ours; see docs/LEVELS.md.
+struct GltfMaterial {
+  glm::vec3 baseColor{1.0f};  // linear (glTF factors are linear)
+  float specular = 0.04f;     // 0.04 + 0.96 * metallic
+  float roughness = 1.0f;
+  glm::vec3 emissive{0.0f};                          // linear
+  std::optional<render::TextureDesc> colorTexture;   // srgb = true
+  std::optional<render::TextureDesc> normalTexture;  // srgb = false
+};
+
+struct GltfSelection {
+  std::string node;  // non-empty: that node (by name) and its children, with transforms
+  std::string mesh;  // non-empty: that mesh (by name), in its own coordinates
+};
+
+struct GltfModel {
+  render::MeshData mesh;  // positions, normals, UVs; degenerate triangles dropped
+  std::optional<GltfMaterial> material;
+  std::vector<std::filesystem::path> filesRead;  // the model and every buffer/image it named
+  std::vector<std::string> warnings;             // "<file>: dropped N degenerate triangles"
+};
+
+// Reads `file`; every file tinygltf opens must resolve inside `allowedRoot`.
+// Throws game::LevelError("<file>: <problem>").
+GltfModel loadGltfModel(const std::filesystem::path& file, const std::filesystem::path& allowedRoot,
+                        const GltfSelection& selection = {});
+
+// Transitional: the mesh alone (meshName selects a mesh, as GltfSelection::mesh).
 render::MeshData loadGltfMesh(const std::filesystem::path& file,
                               const std::filesystem::path& allowedRoot,
                               const std::string& meshName = {});

@@ -1,6 +1,7 @@
 #pragma once
 // A loaded level: plain data, fully validated. No Vulkan here.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -10,13 +11,67 @@
 
 namespace game {
 
+struct Keyframe {
+  glm::vec3 position{0.0f};
+  glm::vec3 rotationDegrees{0.0f};  // same convention as Entity::rotationDegrees
+};
+
+// A keyframed path; keyframes are evenly spaced over the duration.
+struct Mover {
+  enum class Repeat { Once, Loop, PingPong };
+  enum class Easing { Linear, Smooth, EaseIn, EaseOut };
+  float durationSeconds = 1.0f;
+  Repeat repeat = Repeat::Loop;
+  Easing easing = Easing::Linear;
+  std::vector<Keyframe> keyframes;  // 2..256
+};
+
+struct Interactable {
+  enum class Type { Rotate, Slide, Switch };
+  Type type = Type::Rotate;
+  glm::vec3 axis{0.0f, 1.0f, 0.0f};  // unit; Rotate: rotation axis, Slide: rail direction
+  float min = 0.0f;                  // Rotate: degrees, Slide: metres
+  float max = 0.0f;
+  float start = 0.0f;
+  uint32_t light = 0;  // Switch: index into Level::lights
+  bool startsOn = true;
+};
+
 struct Entity {
   std::string id;
   uint32_t mesh = 0;      // index into Level::meshes
   uint32_t material = 0;  // index into Level::materials
   glm::vec3 position{0.0f};
-  glm::vec3 rotationDegrees{0.0f};  // applied as yaw (Y), then pitch (X), then roll (Z)
+  glm::vec3 rotationDegrees{0.0f};  // x: pitch, y: yaw, z: roll; applied yaw, pitch, roll
   glm::vec3 scale{1.0f};
+  bool castsShadow = true;
+  std::optional<Mover> mover;  // at most one of mover and interactable
+  std::optional<Interactable> interactable;
+};
+
+struct Goal {
+  enum class Type { Focus, Lit, Reach, All, Any };
+  Type type = Type::Focus;
+  uint32_t entity = 0;           // Focus: the orb; Lit: the sensor (index into entities)
+  uint32_t light = 0;            // Lit: index into lights
+  glm::vec2 region{0.2f, 0.2f};  // Focus: centred box, fractions of the screen
+  float coverage = 0.5f;         // Focus
+  float risePerSecond = 0.5f;    // Focus
+  float fallPerSecond = 0.25f;   // Focus
+  float threshold = 0.5f;        // Lit
+  float holdSeconds = 0.0f;      // Lit
+  glm::vec3 min{0.0f};           // Reach
+  glm::vec3 max{0.0f};           // Reach
+  std::vector<Goal> children;    // All, Any
+};
+
+struct LoseCondition {
+  enum class Type { Stealth, Fall };
+  Type type = Type::Fall;
+  uint32_t light = 0;          // Stealth: the watcher
+  float exposureLimit = 0.5f;  // Stealth
+  float seconds = 1.0f;        // Stealth
+  float below = 0.0f;          // Fall: height in metres
 };
 
 struct Level {
@@ -24,20 +79,44 @@ struct Level {
   int format = 1;
   std::string name;
   std::string description;
+  std::string author;
+  std::string hint;
   render::CameraDesc camera;
-  render::EnvironmentDesc environment;
+  render::EnvironmentDesc environment;  // sky colours already times sky_intensity
+  uint32_t maxMirrorBounces = 4;
   std::vector<std::string> materialIds;  // parallel to materials
   std::vector<render::MaterialDesc> materials;
-  std::vector<std::string> meshIds;  // parallel to meshes
+  std::vector<render::TextureDesc> textures;  // referenced by materials
+  std::vector<std::string> meshIds;           // parallel to meshes
   std::vector<render::MeshData> meshes;
   std::vector<Entity> entities;
   std::vector<std::string> lightIds;  // parallel to lights
   std::vector<render::LightDesc> lights;
+  std::optional<Goal> goal;
+  std::vector<LoseCondition> lose;
+  // Every file the level was built from (the JSON, models, buffers, textures), for reload.
+  std::vector<std::filesystem::path> sourceFiles;
+  std::vector<std::string> warnings;  // e.g. degenerate triangles dropped, with file and count
 };
 
 glm::mat4 entityTransform(const Entity& entity);
 
-// What the renderer needs to draw the level.
+// What the renderer needs to draw the level (entities at their start positions).
 render::SceneDesc buildSceneDesc(const Level& level);
+
+// The renderer features a level uses, for `sightline info` and pipeline variants.
+struct LevelFeatures {
+  size_t triangles = 0;  // summed over instances
+  size_t instances = 0;
+  size_t lights = 0;
+  bool glass = false;
+  bool mirrors = false;
+  uint32_t mirrorBounces = 0;  // the level's max_mirror_bounces when it has mirrors, else 0
+  bool areaLights = false;     // any light with extent (area, or a sun with a diameter)
+  bool textures = false;
+  bool movers = false;
+  bool interactables = false;
+};
+LevelFeatures levelFeatures(const Level& level);
 
 }  // namespace game

@@ -256,7 +256,7 @@ void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
     VkAccelerationStructureInstanceKHR record{};
     record.transform = toRowMajor3x4(instance.objectToWorld);
     record.instanceCustomIndex = instance.customIndex & 0xFFFFFF;
-    record.mask = 0xFF;
+    record.mask = instance.mask & 0xFF;
     record.instanceShaderBindingTableRecordOffset = 0;
     record.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
     record.accelerationStructureReference = instance.blas->address();

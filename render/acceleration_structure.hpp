@@ -58,6 +58,7 @@ struct TlasInstance {
   const AccelerationStructure* blas = nullptr;
   glm::mat4 objectToWorld{1.0f};
   uint32_t customIndex = 0;  // gl_InstanceCustomIndexEXT
+  uint32_t mask = 0xFF;      // which rays see it (cull mask bits)
 };
 
 class TopLevel {

@@ -310,10 +310,12 @@ Context::Context(const ContextOptions& options) : options_(options) {
     VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &vulkan12};
     vkGetPhysicalDeviceFeatures2(physicalDevice_, &features);
     if (!vulkan12.bufferDeviceAddress || !structureFeatures.accelerationStructure ||
-        !pipelineFeatures.rayTracingPipeline) {
+        !pipelineFeatures.rayTracingPipeline || !vulkan12.runtimeDescriptorArray ||
+        !vulkan12.shaderSampledImageArrayNonUniformIndexing) {
       throw RenderError(deviceInfo_.name +
-                        " lists the ray tracing extensions but not their features "
-                        "(bufferDeviceAddress, accelerationStructure, rayTracingPipeline)");
+                        " lacks a feature Sightline needs (bufferDeviceAddress, "
+                        "accelerationStructure, rayTracingPipeline, runtimeDescriptorArray, "
+                        "shaderSampledImageArrayNonUniformIndexing)");
     }
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR enablePipeline{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
@@ -324,6 +326,8 @@ Context::Context(const ContextOptions& options) : options_(options) {
     VkPhysicalDeviceVulkan12Features enable12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
                                               &enableStructures};
     enable12.bufferDeviceAddress = VK_TRUE;
+    enable12.runtimeDescriptorArray = VK_TRUE;  // texture array sized per level
+    enable12.shaderSampledImageArrayNonUniformIndexing = VK_TRUE;
     enable12.scalarBlockLayout = vulkan12.scalarBlockLayout;
     VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &enable12};
     enable.features.shaderInt64 = features.features.shaderInt64;

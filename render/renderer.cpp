@@ -10,6 +10,7 @@
 #include "render/ray_tracing_pipeline.hpp"
 #include "render/shader_compiler.hpp"
 #include "render/storage_image.hpp"
+#include "render/texture.hpp"
 #include "render/vulkan_error.hpp"
 
 namespace render {
@@ -60,6 +61,15 @@ void imageLayoutBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout f
   vkCmdPipelineBarrier(commands, srcStages, dstStages, 0, 0, nullptr, 0, nullptr, 1, &barrier);
 }
 
+gpu::GpuLight toGpuLight(const LightDesc& light) {
+  const glm::vec3 direction = glm::length(light.direction) > 0.0f ? glm::normalize(light.direction)
+                                                                  : glm::vec3(0.0f, -1.0f, 0.0f);
+  return {glm::vec4(light.position, static_cast<float>(light.type)),
+          glm::vec4(direction, light.enabled ? 1.0f : 0.0f),
+          glm::vec4(light.color * light.intensity, light.radius),
+          glm::vec4(light.size, light.angularDiameterRadians, 0.0f)};
+}
+
 }  // namespace
 
 Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
@@ -99,27 +109,44 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
         {glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0)});
     triangleCount_ += range.indexCount / 3;
   }
+  auto textureSlot = [&](int32_t index) -> uint32_t {
+    if (index < -1 || index >= int32_t(scene.textures.size()))
+      throw RenderError("a material refers to a texture that does not exist");
+    return static_cast<uint32_t>(index + 1);
+  };
   std::vector<gpu::GpuMaterial> gpuMaterials;
   for (const MaterialDesc& material : scene.materials) {
-    gpuMaterials.push_back({glm::vec4(material.baseColor, material.specular),
-                            glm::vec4(material.emissive, material.roughness)});
+    gpuMaterials.push_back(
+        {glm::vec4(material.baseColor, material.specular),
+         glm::vec4(material.emissive, material.roughness), glm::vec4(material.mirrorTint, 0.0f),
+         glm::vec4(material.glassTint, 0.0f),
+         glm::uvec4(static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
+                    textureSlot(material.normalTexture), 0u)});
   }
-  std::vector<gpu::GpuLight> gpuLights;
-  for (const LightDesc& light : scene.lights) {
-    const glm::vec3 direction = glm::length(light.direction) > 0.0f
-                                    ? glm::normalize(light.direction)
-                                    : glm::vec3(0.0f, -1.0f, 0.0f);
-    gpuLights.push_back({glm::vec4(light.position, static_cast<float>(light.type)),
-                         glm::vec4(direction, 0.0f),
-                         glm::vec4(light.color * light.intensity, 0.0f)});
-  }
-  lightCount_ = static_cast<uint32_t>(gpuLights.size());
+  for (const LightDesc& light : scene.lights) gpuLights_.push_back(toGpuLight(light));
+  lightCount_ = static_cast<uint32_t>(gpuLights_.size());
 
   vertices_ = makeStorage(context, allVertices, kGeometryUsage, "vertices");
   indices_ = makeStorage(context, allIndices, kGeometryUsage, "indices");
   instances_ = makeStorage(context, gpuInstances, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
   materials_ = makeStorage(context, gpuMaterials, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
-  lights_ = makeStorage(context, gpuLights, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
+  lights_ = makeStorage(context, gpuLights_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
+  // The texture array is never empty: a white texel stands in when the scene has none.
+  if (scene.textures.empty()) {
+    textures_.push_back(std::make_unique<Texture>(
+        context, TextureDesc{"white", 1, 1, false, {255, 255, 255, 255}}));
+  }
+  for (const TextureDesc& texture : scene.textures)
+    textures_.push_back(std::make_unique<Texture>(context, texture));
+  VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  samplerInfo.magFilter = VK_FILTER_LINEAR;
+  samplerInfo.minFilter = VK_FILTER_LINEAR;
+  samplerInfo.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  samplerInfo.addressModeU = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.addressModeV = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.addressModeW = VK_SAMPLER_ADDRESS_MODE_REPEAT;
+  samplerInfo.maxLod = 0.0f;
+  vkCheck(vkCreateSampler(context.device(), &samplerInfo, nullptr, &sampler_), "vkCreateSampler");
   frameUniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                           MemoryUse::Upload, "frame uniforms");
   counters_ = Buffer(context, sizeof(gpu::FrameCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
@@ -137,8 +164,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   bottomLevels_ = buildBottomLevels(context, geometries);
   std::vector<TlasInstance> tlasInstances;
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    tlasInstances.push_back(
-        {&bottomLevels_[scene.instances[i].mesh], scene.instances[i].objectToWorld, i});
+    const InstanceDesc& instance = scene.instances[i];
+    const uint32_t mask = MASK_VISIBLE | (instance.castsShadow ? MASK_SHADOW_CASTER : 0u);
+    tlasInstances.push_back({&bottomLevels_[instance.mesh], instance.objectToWorld, i, mask});
   }
   topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
 
@@ -166,6 +194,7 @@ Renderer::~Renderer() {
   if (frameDone_) vkDestroyFence(device, frameDone_, nullptr);
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   if (tonemapPipeline_) vkDestroyPipeline(device, tonemapPipeline_, nullptr);
+  if (sampler_) vkDestroySampler(device, sampler_, nullptr);
   rayTracingPipeline_.reset();
   if (pipelineLayout_) vkDestroyPipelineLayout(device, pipelineLayout_, nullptr);
   if (descriptorPool_) vkDestroyDescriptorPool(device, descriptorPool_, nullptr);
@@ -192,6 +221,10 @@ void Renderer::createDescriptors() {
     layoutBindings.push_back({binding, type, 1, kAllStages, nullptr});
     poolSizes.push_back({type, 1});
   }
+  const uint32_t textureCount = static_cast<uint32_t>(textures_.size());
+  layoutBindings.push_back({BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                            textureCount, kRayStages, nullptr});
+  poolSizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount});
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
   layoutInfo.pBindings = layoutBindings.data();
@@ -247,6 +280,13 @@ void Renderer::createDescriptors() {
                                                               : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
         .pBufferInfo = &bufferInfos[i];
   }
+  std::vector<VkDescriptorImageInfo> textureInfos;
+  for (const auto& texture : textures_)
+    textureInfos.push_back({sampler_, texture->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  VkWriteDescriptorSet& textureWrite =
+      write(BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
+  textureWrite.descriptorCount = textureCount;
+  textureWrite.pImageInfo = textureInfos.data();
   vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
 
   VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -284,6 +324,12 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
   if (objectToWorld.size() != topLevel_->instanceCount())
     throw RenderError("setInstanceTransforms: expected one transform per instance");
   pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
+}
+
+void Renderer::setLightEnabled(uint32_t light, bool enabled) {
+  if (light >= gpuLights_.size()) throw RenderError("setLightEnabled: no such light");
+  gpuLights_[light].directionEnabled.w = enabled ? 1.0f : 0.0f;
+  lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
 void Renderer::writeFrameUniforms(const FrameDesc& frame) {

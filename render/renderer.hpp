@@ -9,6 +9,7 @@
 
 #include "render/acceleration_structure.hpp"
 #include "render/buffer.hpp"
+#include "render/gpu_types.hpp"
 #include "render/scene_desc.hpp"
 
 namespace render {
@@ -17,6 +18,7 @@ class Context;
 class ShaderCompiler;
 class StorageImage;
 class RayTracingPipeline;
+class Texture;
 
 struct RendererOptions {
   uint32_t width = 320;
@@ -47,6 +49,9 @@ class Renderer {
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
 
+  // Turns a light on or off from the next frame (switches).
+  void setLightEnabled(uint32_t light, bool enabled);
+
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
   uint32_t width() const { return options_.width; }
@@ -76,6 +81,9 @@ class Renderer {
   std::vector<AccelerationStructure> bottomLevels_;
   std::unique_ptr<TopLevel> topLevel_;
   std::vector<glm::mat4> pendingTransforms_;
+  std::vector<gpu::GpuLight> gpuLights_;
+  std::vector<std::unique_ptr<Texture>> textures_;
+  VkSampler sampler_ = VK_NULL_HANDLE;
   std::unique_ptr<StorageImage> hdrImage_;
   std::unique_ptr<StorageImage> outputImage_;
 

@@ -11,6 +11,16 @@ namespace render {
 struct Vertex {
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
+  glm::vec2 uv{0.0f};  // texture coordinates; (0, 0) top-left of the image, as in glTF
+};
+
+// A decoded texture, RGBA8, rows top to bottom.
+struct TextureDesc {
+  std::string name;  // file it came from, for messages and debug names
+  uint32_t width = 0;
+  uint32_t height = 0;
+  bool srgb = true;  // colour textures: sRGB-encoded; normal maps: linear
+  std::vector<uint8_t> rgba;
 };
 
 struct MeshData {
@@ -19,31 +29,51 @@ struct MeshData {
   std::vector<uint32_t> indices;  // three per triangle, counter-clockwise front faces
 };
 
+enum class MaterialKind : uint32_t {
+  Diffuse = 0,  // Lambert + Blinn-Phong highlight
+  Mirror = 1,   // perfect reflection times mirrorTint
+  Glass = 2,    // transmittance glassTint per front face crossed, no refraction
+};
+
 // Colours are linear (already converted from the sRGB the author wrote).
 struct MaterialDesc {
-  glm::vec3 baseColor{0.8f};  // diffuse albedo
-  float specular = 0.0f;      // Blinn-Phong lobe weight in [0, 1]
-  float roughness = 0.5f;     // (0, 1]; mapped to the Blinn-Phong exponent 2/r^4 - 2
-  glm::vec3 emissive{0.0f};   // emitted radiance, added unlit
+  MaterialKind kind = MaterialKind::Diffuse;
+  glm::vec3 baseColor{0.8f};   // diffuse albedo
+  float specular = 0.0f;       // Blinn-Phong lobe weight in [0, 1]
+  float roughness = 0.5f;      // (0, 1]; mapped to the Blinn-Phong exponent 2/r^4 - 2
+  glm::vec3 emissive{0.0f};    // emitted radiance, added unlit
+  glm::vec3 mirrorTint{1.0f};  // Mirror: reflectance times tint, linear
+  glm::vec3 glassTint{1.0f};   // Glass: linear transmittance per front face
+  int32_t colorTexture = -1;   // index into SceneDesc::textures (sRGB), multiplies baseColor
+  int32_t normalTexture = -1;  // index into SceneDesc::textures (linear, tangent space)
 };
 
 struct InstanceDesc {
   uint32_t mesh = 0;
   uint32_t material = 0;
   glm::mat4 objectToWorld{1.0f};
+  bool castsShadow = true;
 };
 
 enum class LightType : uint32_t {
   Point = 0,        // intensity: radiant intensity in W/sr (irradiance = I cos / d^2)
   Directional = 1,  // intensity: irradiance in W/m^2 on a surface facing the light
+  Sphere = 2,       // intensity: radiance in W/(m^2 sr); radius
+  Rectangle = 3,    // intensity: radiance; size, emits along direction
+  Disk = 4,         // intensity: radiance; radius, emits along direction
 };
 
 struct LightDesc {
   LightType type = LightType::Point;
-  glm::vec3 position{0.0f};                // point lights
-  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional lights: the way the light travels
+  glm::vec3 position{0.0f};                // point and area lights
+  glm::vec3 direction{0.0f, -1.0f, 0.0f};  // directional: the way light travels; rectangle
+                                           // and disk: the side they emit from
   glm::vec3 color{1.0f};                   // linear, multiplies intensity
   float intensity = 1.0f;
+  float radius = 0.0f;                  // sphere and disk
+  glm::vec2 size{0.0f};                 // rectangle: width, height
+  float angularDiameterRadians = 0.0f;  // directional: 0 = hard shadows
+  bool enabled = true;
 };
 
 struct EnvironmentDesc {
@@ -55,9 +85,11 @@ struct EnvironmentDesc {
 struct SceneDesc {
   std::vector<MeshData> meshes;
   std::vector<MaterialDesc> materials;
+  std::vector<TextureDesc> textures;
   std::vector<InstanceDesc> instances;
   std::vector<LightDesc> lights;
   EnvironmentDesc environment;
+  uint32_t maxMirrorBounces = 4;  // [0, 31]
 };
 
 struct CameraDesc {

@@ -5,8 +5,10 @@
 #define MISS_SHADOW 1
 
 struct SurfaceHit {
-  vec3 shadingNormal;    // world space, unit (not yet facing the viewer)
+  vec3 shadingNormal;    // world space, unit, normal map applied (not yet facing the viewer)
   float hitT;            // < 0: the ray missed everything
   vec3 geometricNormal;  // world space, unit
   uint material;
+  vec3 albedo;           // linear base colour times the colour texture
+  uint instance;
 };

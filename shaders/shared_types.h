@@ -23,15 +23,27 @@ using uint = uint32_t;
 #define BINDING_VERTICES 7
 #define BINDING_INDICES 8
 #define BINDING_COUNTERS 9
+#define BINDING_TEXTURES 10
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
+#define LIGHT_SPHERE 2u
+#define LIGHT_RECTANGLE 3u
+#define LIGHT_DISK 4u
+
+#define MATERIAL_DIFFUSE 0u
+#define MATERIAL_MIRROR 1u
+#define MATERIAL_GLASS 2u
+
+// Instance mask bits: primary rays see everything, shadow rays only shadow casters.
+#define MASK_VISIBLE 0x01u
+#define MASK_SHADOW_CASTER 0x02u
 
 #define TONEMAP_IDENTITY 0u
 #define TONEMAP_ACES 1u
 
-// Floats per vertex in the vertex buffer: position xyz, normal xyz.
-#define VERTEX_FLOATS 6
+// Floats per vertex in the vertex buffer: position xyz, normal xyz, uv.
+#define VERTEX_FLOATS 8
 
 struct FrameUniforms {
   vec4 cameraPosition;    // xyz
@@ -52,12 +64,16 @@ struct GpuInstance {
 struct GpuMaterial {
   vec4 baseColorSpecular;  // rgb: linear albedo, a: specular weight
   vec4 emissiveRoughness;  // rgb: linear emitted radiance, a: roughness
+  vec4 mirrorTint;         // rgb: reflectance times tint (MATERIAL_MIRROR)
+  vec4 glassTint;          // rgb: transmittance per front face (MATERIAL_GLASS)
+  uvec4 kindTextures;      // x: MATERIAL_*, y: colour texture + 1, z: normal map + 1 (0: none)
 };
 
 struct GpuLight {
-  vec4 positionType;      // xyz: position (point), w: LIGHT_* as float
-  vec4 direction;         // xyz: unit direction light travels (directional)
-  vec4 radiantIntensity;  // rgb: colour * intensity (W/sr for point, W/m^2 directional)
+  vec4 positionType;      // xyz: position, w: LIGHT_* as float
+  vec4 directionEnabled;  // xyz: unit direction (light travel / emitting side), w: 1 if on
+  vec4 radianceRadius;    // rgb: colour * intensity (unit by type), w: radius
+  vec4 extent;            // xy: rectangle size, z: angular diameter in radians
 };
 
 // Counters the ray-gen shader adds into; integers so sums do not depend on order.
