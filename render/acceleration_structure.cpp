@@ -19,7 +19,9 @@ VkAccelerationStructureGeometryKHR triangleGeometry(const TriangleGeometry& mesh
   VkAccelerationStructureGeometryKHR geometry{
       VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
   geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
-  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;  // no any-hit call for opaque surfaces
+  // Opaque unless an instance forces otherwise (glass); a duplicate any-hit call would apply
+  // a glass tint twice.
+  geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR | VK_GEOMETRY_NO_DUPLICATE_ANY_HIT_INVOCATION_BIT_KHR;
   auto& triangles = geometry.geometry.triangles;
   triangles.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
   triangles.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
@@ -257,8 +259,8 @@ void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
     record.transform = toRowMajor3x4(instance.objectToWorld);
     record.instanceCustomIndex = instance.customIndex & 0xFFFFFF;
     record.mask = instance.mask & 0xFF;
-    record.instanceShaderBindingTableRecordOffset = 0;
-    record.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+    record.instanceShaderBindingTableRecordOffset = instance.hitGroup;
+    record.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR | instance.flags;
     record.accelerationStructureReference = instance.blas->address();
     instances_.push_back(record);
   }

@@ -57,8 +57,10 @@ std::vector<AccelerationStructure> buildBottomLevels(const Context& context,
 struct TlasInstance {
   const AccelerationStructure* blas = nullptr;
   glm::mat4 objectToWorld{1.0f};
-  uint32_t customIndex = 0;  // gl_InstanceCustomIndexEXT
-  uint32_t mask = 0xFF;      // which rays see it (cull mask bits)
+  uint32_t customIndex = 0;              // gl_InstanceCustomIndexEXT
+  uint32_t mask = 0xFF;                  // which rays see it (cull mask bits)
+  uint32_t hitGroup = 0;                 // SBT record offset: which hit group its hits run
+  VkGeometryInstanceFlagsKHR flags = 0;  // e.g. FORCE_OPAQUE / FORCE_NO_OPAQUE
 };
 
 class TopLevel {

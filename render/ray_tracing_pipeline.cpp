@@ -1,6 +1,5 @@
 #include "render/ray_tracing_pipeline.hpp"
 
-#include <array>
 #include <string>
 
 #include "render/context.hpp"
@@ -9,7 +8,7 @@
 namespace render {
 
 VkShaderModule createShaderModule(const Context& context, const std::vector<uint32_t>& spirv,
-                                  const char* name) {
+                                  const std::string& name) {
   VkShaderModuleCreateInfo createInfo{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
   createInfo.codeSize = spirv.size() * sizeof(uint32_t);
   createInfo.pCode = spirv.data();
@@ -20,67 +19,87 @@ VkShaderModule createShaderModule(const Context& context, const std::vector<uint
   return module;
 }
 
+namespace {
+
+// Stages and groups as Vulkan wants them; owns the modules until the pipeline exists.
+struct StageList {
+  const Context& context;
+  std::vector<VkPipelineShaderStageCreateInfo> stages;
+  std::vector<VkShaderModule> modules;
+
+  uint32_t add(const ShaderCode& code, VkShaderStageFlagBits stage) {
+    if (code.spirv.empty()) return VK_SHADER_UNUSED_KHR;
+    modules.push_back(createShaderModule(context, code.spirv, code.name));
+    VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage = stage;
+    info.module = modules.back();
+    info.pName = "main";
+    stages.push_back(info);
+    return static_cast<uint32_t>(stages.size() - 1);
+  }
+  ~StageList() {
+    for (VkShaderModule module : modules) vkDestroyShaderModule(context.device(), module, nullptr);
+  }
+};
+
+VkRayTracingShaderGroupCreateInfoKHR generalGroup(uint32_t stage) {
+  VkRayTracingShaderGroupCreateInfoKHR group{
+      VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
+  group.type = VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
+  group.generalShader = stage;
+  group.closestHitShader = VK_SHADER_UNUSED_KHR;
+  group.anyHitShader = VK_SHADER_UNUSED_KHR;
+  group.intersectionShader = VK_SHADER_UNUSED_KHR;
+  return group;
+}
+
+}  // namespace
+
 RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout layout,
-                                       const RayTracingShaders& shaders, uint32_t recursionDepth)
+                                       const RayTracingProgram& program)
     : context_(context) {
   const auto& properties = context.rayTracingProperties();
-  if (recursionDepth > properties.maxRayRecursionDepth) {
-    throw RenderError("the level needs ray recursion depth " + std::to_string(recursionDepth) +
-                      " but " + context.deviceInfo().name + " allows " +
-                      std::to_string(properties.maxRayRecursionDepth));
+  if (program.recursionDepth < 1 || program.recursionDepth > properties.maxRayRecursionDepth) {
+    throw RenderError("the pipeline needs ray recursion depth " +
+                      std::to_string(program.recursionDepth) + " but " + context.deviceInfo().name +
+                      " allows 1 to " + std::to_string(properties.maxRayRecursionDepth));
   }
-  enum Stage : uint32_t { Raygen, SurfaceMiss, ShadowMiss, SurfaceHit, StageCount };
-  const std::array<const std::vector<uint32_t>*, StageCount> code = {
-      &shaders.raygen, &shaders.surfaceMiss, &shaders.shadowMiss, &shaders.surfaceClosestHit};
-  const std::array<VkShaderStageFlagBits, StageCount> stageBits = {
-      VK_SHADER_STAGE_RAYGEN_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR, VK_SHADER_STAGE_MISS_BIT_KHR,
-      VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR};
-  const std::array<const char*, StageCount> names = {"raygen", "surface miss", "shadow miss",
-                                                     "surface closest hit"};
-  std::array<VkPipelineShaderStageCreateInfo, StageCount> stages{};
-  std::array<VkShaderModule, StageCount> modules{};
-  for (uint32_t i = 0; i < StageCount; ++i) {
-    modules[i] = createShaderModule(context, *code[i], names[i]);
-    stages[i] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-    stages[i].stage = stageBits[i];
-    stages[i].module = modules[i];
-    stages[i].pName = "main";
+  StageList stages{context, {}, {}};
+  std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+  groups.push_back(generalGroup(stages.add(program.raygen, VK_SHADER_STAGE_RAYGEN_BIT_KHR)));
+  for (const ShaderCode& miss : program.misses)
+    groups.push_back(generalGroup(stages.add(miss, VK_SHADER_STAGE_MISS_BIT_KHR)));
+  for (const HitGroup& hitGroup : program.hitGroups) {
+    VkRayTracingShaderGroupCreateInfoKHR group = generalGroup(VK_SHADER_UNUSED_KHR);
+    group.type = VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;
+    group.closestHitShader = stages.add(hitGroup.closestHit, VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR);
+    group.anyHitShader = stages.add(hitGroup.anyHit, VK_SHADER_STAGE_ANY_HIT_BIT_KHR);
+    groups.push_back(group);
   }
-  // Group order is the SBT order: raygen | surface miss, shadow miss | surface hit.
-  std::array<VkRayTracingShaderGroupCreateInfoKHR, StageCount> groups{};
-  for (uint32_t i = 0; i < StageCount; ++i) {
-    groups[i] = {VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
-    groups[i].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
-    groups[i].generalShader = i;
-    groups[i].closestHitShader = VK_SHADER_UNUSED_KHR;
-    groups[i].anyHitShader = VK_SHADER_UNUSED_KHR;
-    groups[i].intersectionShader = VK_SHADER_UNUSED_KHR;
-  }
-  groups[SurfaceHit].type = VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR;
-  groups[SurfaceHit].generalShader = VK_SHADER_UNUSED_KHR;
-  groups[SurfaceHit].closestHitShader = SurfaceHit;
 
   VkRayTracingPipelineCreateInfoKHR createInfo{
       VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
-  createInfo.stageCount = StageCount;
-  createInfo.pStages = stages.data();
-  createInfo.groupCount = StageCount;
+  createInfo.stageCount = static_cast<uint32_t>(stages.stages.size());
+  createInfo.pStages = stages.stages.data();
+  createInfo.groupCount = static_cast<uint32_t>(groups.size());
   createInfo.pGroups = groups.data();
-  createInfo.maxPipelineRayRecursionDepth = recursionDepth;
+  createInfo.maxPipelineRayRecursionDepth = program.recursionDepth;
   createInfo.layout = layout;
-  VkResult result = context.rt().createPipelines(context.device(), VK_NULL_HANDLE, VK_NULL_HANDLE,
-                                                 1, &createInfo, nullptr, &pipeline_);
-  for (VkShaderModule module : modules) vkDestroyShaderModule(context.device(), module, nullptr);
-  vkCheck(result, "vkCreateRayTracingPipelinesKHR");
+  vkCheck(context.rt().createPipelines(context.device(), VK_NULL_HANDLE, VK_NULL_HANDLE, 1,
+                                       &createInfo, nullptr, &pipeline_),
+          "vkCreateRayTracingPipelinesKHR");
   context.setName(pipeline_, VK_OBJECT_TYPE_PIPELINE, "ray tracing pipeline");
 
+  const uint32_t missCount = static_cast<uint32_t>(program.misses.size());
+  const uint32_t hitCount = static_cast<uint32_t>(program.hitGroups.size());
   const SbtProperties sbtProperties{properties.shaderGroupHandleSize,
                                     properties.shaderGroupHandleAlignment,
                                     properties.shaderGroupBaseAlignment};
-  layout_ = computeSbtLayout(sbtProperties, 2, 1);
+  layout_ = computeSbtLayout(sbtProperties, missCount, hitCount);
   const uint32_t handleSize = properties.shaderGroupHandleSize;
-  std::vector<uint8_t> handles(static_cast<size_t>(StageCount) * handleSize);
-  vkCheck(context.rt().getGroupHandles(context.device(), pipeline_, 0, StageCount, handles.size(),
+  std::vector<uint8_t> handles(groups.size() * handleSize);
+  vkCheck(context.rt().getGroupHandles(context.device(), pipeline_, 0,
+                                       static_cast<uint32_t>(groups.size()), handles.size(),
                                        handles.data()),
           "vkGetRayTracingShaderGroupHandlesKHR");
   // Over-allocate so the table's start can be aligned to the base alignment.
@@ -95,10 +114,11 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
     sbt_.write(handles.data() + static_cast<size_t>(group) * handleSize, handleSize,
                baseOffset + offset);
   };
-  writeHandle(Raygen, layout_.raygen.offset);
-  writeHandle(SurfaceMiss, layout_.miss.offset);
-  writeHandle(ShadowMiss, layout_.miss.offset + layout_.miss.stride);
-  writeHandle(SurfaceHit, layout_.hit.offset);
+  writeHandle(0, layout_.raygen.offset);
+  for (uint32_t i = 0; i < missCount; ++i)
+    writeHandle(1 + i, layout_.miss.offset + i * layout_.miss.stride);
+  for (uint32_t i = 0; i < hitCount; ++i)
+    writeHandle(1 + missCount + i, layout_.hit.offset + i * layout_.hit.stride);
   raygenRegion_ = {base + layout_.raygen.offset, layout_.raygen.stride, layout_.raygen.size};
   missRegion_ = {base + layout_.miss.offset, layout_.miss.stride, layout_.miss.size};
   hitRegion_ = {base + layout_.hit.offset, layout_.hit.stride, layout_.hit.size};

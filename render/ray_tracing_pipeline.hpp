@@ -1,7 +1,7 @@
 #pragma once
-// The ray tracing pipeline (raygen, surface miss, shadow miss, one triangle hit group) and its
-// shader binding table.
+// A ray tracing pipeline built from a list of shader groups, and its shader binding table.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -13,19 +13,32 @@ namespace render {
 
 class Context;
 
-struct RayTracingShaders {
-  std::vector<uint32_t> raygen;
-  std::vector<uint32_t> surfaceMiss;
-  std::vector<uint32_t> shadowMiss;
-  std::vector<uint32_t> surfaceClosestHit;
+struct ShaderCode {
+  std::string name;  // e.g. "raygen.rgen"; for debug names and pipeline descriptions
+  std::vector<uint32_t> spirv;
+};
+
+struct HitGroup {
+  std::string name;
+  ShaderCode closestHit;  // empty spirv: none
+  ShaderCode anyHit;      // empty spirv: none
+};
+
+// Groups in SBT order: the raygen shader, the miss shaders (index = trace's missIndex), then
+// the hit groups (index = instance SBT offset).
+struct RayTracingProgram {
+  ShaderCode raygen;
+  std::vector<ShaderCode> misses;
+  std::vector<HitGroup> hitGroups;
+  uint32_t recursionDepth = 1;  // how deep the shaders nest traceRayEXT calls
 };
 
 class RayTracingPipeline {
  public:
-  // `recursionDepth` is how deep the shaders trace (1: only ray-gen traces); it is checked
-  // against the device's limit here, the one place that knows both.
+  // The recursion depth is checked against the device's limit here, the one place that
+  // knows both.
   RayTracingPipeline(const Context& context, VkPipelineLayout layout,
-                     const RayTracingShaders& shaders, uint32_t recursionDepth);
+                     const RayTracingProgram& program);
   ~RayTracingPipeline();
   RayTracingPipeline(const RayTracingPipeline&) = delete;
   RayTracingPipeline& operator=(const RayTracingPipeline&) = delete;
@@ -43,6 +56,6 @@ class RayTracingPipeline {
 };
 
 VkShaderModule createShaderModule(const Context& context, const std::vector<uint32_t>& spirv,
-                                  const char* name);
+                                  const std::string& name);
 
 }  // namespace render

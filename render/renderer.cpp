@@ -151,6 +151,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
                           MemoryUse::Upload, "frame uniforms");
   counters_ = Buffer(context, sizeof(gpu::FrameCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                      MemoryUse::Readback, "frame counters");
+  paths_ = Buffer(context, VkDeviceSize(options.width) * options.height * sizeof(gpu::PixelPath),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Readback, "pixel paths");
   readback_ = Buffer(context, VkDeviceSize(options.width) * options.height * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
 
@@ -165,8 +167,19 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   std::vector<TlasInstance> tlasInstances;
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const InstanceDesc& instance = scene.instances[i];
-    const uint32_t mask = MASK_VISIBLE | (instance.castsShadow ? MASK_SHADOW_CASTER : 0u);
-    tlasInstances.push_back({&bottomLevels_[instance.mesh], instance.objectToWorld, i, mask});
+    const bool glass = scene.materials[instance.material].kind == MaterialKind::Glass;
+    TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
+    if (glass) {
+      // Non-opaque, so the glass any-hit shader runs; only glass rays see it.
+      tlasInstance.mask = MASK_GLASS | (instance.castsShadow ? MASK_GLASS_SHADOW : 0u);
+      tlasInstance.hitGroup = HIT_GROUP_GLASS;
+      tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;
+    } else {
+      tlasInstance.mask = MASK_VISIBLE | (instance.castsShadow ? MASK_SHADOW_CASTER : 0u);
+      tlasInstance.hitGroup = HIT_GROUP_SURFACE;
+      tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
+    }
+    tlasInstances.push_back(tlasInstance);
   }
   topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
 
@@ -176,7 +189,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
                                                 VK_FORMAT_R8G8B8A8_UNORM,
                                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
   createDescriptors();
-  createPipelines(compiler);
+  createPipelines(compiler,
+                  options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene));
 
   VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocateInfo.commandPool = context.commandPool();
@@ -203,7 +217,7 @@ Renderer::~Renderer() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 10> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 11> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -214,6 +228,7 @@ void Renderer::createDescriptors() {
       {BINDING_VERTICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_PATHS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
   std::vector<VkDescriptorPoolSize> poolSizes;
@@ -251,7 +266,7 @@ void Renderer::createDescriptors() {
   const VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdrImage_->view(), VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo outputInfo{VK_NULL_HANDLE, outputImage_->view(),
                                          VK_IMAGE_LAYOUT_GENERAL};
-  const std::array<std::pair<uint32_t, const Buffer*>, 7> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 8> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -259,8 +274,9 @@ void Renderer::createDescriptors() {
       {BINDING_VERTICES, &vertices_},
       {BINDING_INDICES, &indices_},
       {BINDING_COUNTERS, &counters_},
+      {BINDING_PATHS, &paths_},
   }};
-  std::array<VkDescriptorBufferInfo, 7> bufferInfos{};
+  std::array<VkDescriptorBufferInfo, 8> bufferInfos{};
   std::vector<VkWriteDescriptorSet> writes;
   auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
     VkWriteDescriptorSet entry{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -296,14 +312,22 @@ void Renderer::createDescriptors() {
           "vkCreatePipelineLayout");
 }
 
-void Renderer::createPipelines(ShaderCompiler& compiler) {
-  RayTracingShaders shaders;
-  shaders.raygen = compiler.compile("raygen.rgen").spirv;
-  shaders.surfaceMiss = compiler.compile("surface.rmiss").spirv;
-  shaders.shadowMiss = compiler.compile("shadow.rmiss").spirv;
-  shaders.surfaceClosestHit = compiler.compile("surface.rchit").spirv;
-  // Only ray-gen traces (primary and shadow rays), so one level of recursion is enough.
-  rayTracingPipeline_ = std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, shaders, 1);
+void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features) {
+  pipelineDescription_ = describePipeline(features);
+  const ShaderDefines& defines = pipelineDescription_.defines;
+  auto load = [&](const std::string& file) {
+    return ShaderCode{file, compiler.compile(file, defines).spirv};
+  };
+  RayTracingProgram program;
+  program.raygen = load("raygen.rgen");
+  for (const std::string& miss : pipelineDescription_.misses) program.misses.push_back(load(miss));
+  for (const std::string& group : pipelineDescription_.hitGroups) {
+    HitGroup hitGroup{group, {}, {}};
+    (group.ends_with(".rahit") ? hitGroup.anyHit : hitGroup.closestHit) = load(group);
+    program.hitGroups.push_back(std::move(hitGroup));
+  }
+  program.recursionDepth = pipelineDescription_.recursionDepth;
+  rayTracingPipeline_ = std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, program);
 
   const std::vector<uint32_t> tonemap = compiler.compile("tonemap.comp").spirv;
   VkShaderModule module = createShaderModule(context_, tonemap, "tonemap");
@@ -324,6 +348,12 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
   if (objectToWorld.size() != topLevel_->instanceCount())
     throw RenderError("setInstanceTransforms: expected one transform per instance");
   pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
+}
+
+std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
+  std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
+  paths_.read(result.data(), result.size() * sizeof(gpu::PixelPath));
+  return result;
 }
 
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
@@ -435,8 +465,8 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
   stats.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
   gpu::FrameCounters counters{};
   counters_.read(&counters, sizeof counters);
-  stats.primaryRays = counters.primaryRays;
-  stats.shadowRays = counters.shadowRays;
+  stats.surfaceRays = counters.surfaceRays;
+  stats.secondaryRays = counters.secondaryRays;
   if (readback) {
     pixels_.resize(readback_.size());
     readback_.read(pixels_.data(), pixels_.size());

@@ -10,6 +10,7 @@
 #include "render/acceleration_structure.hpp"
 #include "render/buffer.hpp"
 #include "render/gpu_types.hpp"
+#include "render/pipeline_variant.hpp"
 #include "render/scene_desc.hpp"
 
 namespace render {
@@ -26,13 +27,15 @@ struct RendererOptions {
   // Launch rows are dealt to image rows in this many interleaved groups (1 = off), so a CPU
   // driver's contiguous per-thread blocks each get a share of every part of the image.
   uint32_t rowGroups = 8;
+  // Build the all-features pipeline instead of the scene's own variant (for measuring it).
+  bool allFeatures = false;
 };
 
 struct FrameStats {
-  double milliseconds = 0.0;  // host time from submit to completion
-  uint64_t primaryRays = 0;   // counted by the ray-gen shader
-  uint64_t shadowRays = 0;
-  uint64_t rays() const { return primaryRays + shadowRays; }
+  double milliseconds = 0.0;   // host time from submit to completion
+  uint64_t surfaceRays = 0;    // camera rays and mirror bounces, counted by the ray-gen shader
+  uint64_t secondaryRays = 0;  // shadow and glass rays
+  uint64_t rays() const { return surfaceRays + secondaryRays; }
 };
 
 class Renderer {
@@ -54,13 +57,16 @@ class Renderer {
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
+  // What each pixel's path reached in the last frame (rows top to bottom).
+  std::vector<gpu::PixelPath> pixelPaths() const;
+  const PipelineDescription& pipelineDescription() const { return pipelineDescription_; }
   uint32_t width() const { return options_.width; }
   uint32_t height() const { return options_.height; }
   size_t triangleCount() const { return triangleCount_; }
 
  private:
   void createDescriptors();
-  void createPipelines(ShaderCompiler& compiler);
+  void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features);
   void writeFrameUniforms(const FrameDesc& frame);
   void recordFrame(VkCommandBuffer commands, bool readback);
 
@@ -77,6 +83,8 @@ class Renderer {
   Buffer lights_;
   Buffer frameUniforms_;
   Buffer counters_;
+  Buffer paths_;
+  PipelineDescription pipelineDescription_;
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;
   std::unique_ptr<TopLevel> topLevel_;

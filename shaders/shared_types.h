@@ -24,6 +24,7 @@ using uint = uint32_t;
 #define BINDING_INDICES 8
 #define BINDING_COUNTERS 9
 #define BINDING_TEXTURES 10
+#define BINDING_PATHS 11
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -35,9 +36,19 @@ using uint = uint32_t;
 #define MATERIAL_MIRROR 1u
 #define MATERIAL_GLASS 2u
 
-// Instance mask bits: primary rays see everything, shadow rays only shadow casters.
+// Instance mask bits. Surface rays see opaque instances, shadow rays opaque shadow casters;
+// glass is only seen by the glass rays that collect its tint.
 #define MASK_VISIBLE 0x01u
 #define MASK_SHADOW_CASTER 0x02u
+#define MASK_GLASS 0x04u
+#define MASK_GLASS_SHADOW 0x08u
+
+// Hit groups (the instance's SBT record offset).
+#define HIT_GROUP_SURFACE 0u
+#define HIT_GROUP_GLASS 1u
+
+// What a pixel's final path reached, written by ray-gen for tests and probes.
+#define PATH_REACHED_NOTHING 0xFFFFFFFFu
 
 #define TONEMAP_IDENTITY 0u
 #define TONEMAP_ACES 1u
@@ -78,10 +89,15 @@ struct GpuLight {
 
 // Counters the ray-gen shader adds into; integers so sums do not depend on order.
 struct FrameCounters {
-  uint primaryRays;
-  uint shadowRays;
+  uint surfaceRays;    // camera rays and their mirror bounces
+  uint secondaryRays;  // shadow rays and glass rays
   uint reserved0;
   uint reserved1;
+};
+
+struct PixelPath {
+  uint finalInstance;  // instance the path ended on (after glass and mirrors), or NOTHING
+  uint bounces;        // mirror reflections taken
 };
 
 #ifdef __cplusplus

@@ -1,0 +1,75 @@
+// validate, info and devices: look at levels and devices without rendering.
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/commands.hpp"
+#include "app/data_paths.hpp"
+#include "app/session.hpp"
+#include "game/level.hpp"
+#include "game/level_loader.hpp"
+#include "render/image_io.hpp"
+#include "render/renderer.hpp"
+
+namespace app {
+
+int commandValidate(const Options& options) {
+  if (options.positional.empty()) throw UsageError("validate: expected level files");
+  int failures = 0;
+  for (const std::string& file : options.positional) {
+    try {
+      const game::Level level = game::loadLevel(file);
+      std::printf("%s: ok (%zu entities, %zu meshes, %zu lights)\n", file.c_str(),
+                  level.entities.size(), level.meshes.size(), level.lights.size());
+    } catch (const game::LevelError& error) {
+      std::fprintf(stderr, "%s\n", error.what());
+      ++failures;
+    }
+  }
+  return failures ? 1 : 0;
+}
+
+int commandDevices() {
+  const auto devices = render::Context::listDevices();
+  if (devices.empty()) std::printf("no Vulkan devices found\n");
+  for (const auto& device : devices) {
+    std::printf("%u: %s [%s] %s — %s\n", device.index, device.name.c_str(),
+                render::deviceTypeName(device.type), device.driver.c_str(),
+                device.missingExtensions.empty()
+                    ? "ray tracing: yes"
+                    : render::describeMissingRayTracing(device).c_str());
+  }
+  return 0;
+}
+
+}  // namespace app
+
+namespace app {
+
+int commandInfo(const Options& options) {
+  if (options.positional.size() != 1) throw UsageError("info: expected one level file");
+  const game::Level level = game::loadLevel(options.positional[0]);
+  const game::LevelFeatures features = game::levelFeatures(level);
+  std::printf("%s (%s)\n", level.name.c_str(), level.file.c_str());
+  if (!level.author.empty()) std::printf("  author: %s\n", level.author.c_str());
+  std::printf("  triangles: %zu in %zu instances of %zu meshes\n", features.triangles,
+              features.instances, level.meshes.size());
+  std::printf("  lights: %zu, materials: %zu, textures: %zu\n", features.lights,
+              level.materials.size(), level.textures.size());
+  std::printf("  glass: %s\n", features.glass ? "yes" : "no");
+  if (features.mirrors) {
+    std::printf("  mirrors: yes, up to %u bounces\n", features.mirrorBounces);
+  } else {
+    std::printf("  mirrors: no\n");
+  }
+  std::printf("  area lights (soft shadows): %s\n", features.areaLights ? "yes" : "no");
+  std::printf("  textures: %s\n", features.textures ? "yes" : "no");
+  std::printf("  movers: %s, interactables: %s\n", features.movers ? "yes" : "no",
+              features.interactables ? "yes" : "no");
+  std::printf("  goal: %s, lose conditions: %zu\n", level.goal ? "yes" : "none (sandbox)",
+              level.lose.size());
+  for (const std::string& warning : level.warnings) std::printf("  warning: %s\n", warning.c_str());
+  return 0;
+}
+
+}  // namespace app

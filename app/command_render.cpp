@@ -1,0 +1,154 @@
+// render, play and preview: draw a level headless and write a PNG.
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <thread>
+#include <vector>
+
+#include "app/commands.hpp"
+#include "app/data_paths.hpp"
+#include "app/session.hpp"
+#include "game/level.hpp"
+#include "game/level_loader.hpp"
+#include "game/level_watcher.hpp"
+#include "render/image_io.hpp"
+#include "render/renderer.hpp"
+
+namespace app {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct RenderResult {
+  render::FrameStats last;
+  double milliseconds = 0.0;  // the first frame's, or the median of the rest
+};
+
+// Renders `frames` frames of a level and writes the last one as a PNG.
+RenderResult renderToPng(const render::Context& context, render::ShaderCompiler& compiler,
+                         const game::Level& level, const Options& options, uint32_t frames,
+                         const fs::path& out) {
+  render::RendererOptions rendererOptions;
+  rendererOptions.width = options.width;
+  rendererOptions.height = options.height;
+  rendererOptions.rowGroups = options.rowGroups;
+  render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
+  std::vector<double> times;
+  RenderResult result;
+  for (uint32_t i = 0; i < frames; ++i) {
+    result.last = renderer.renderFrame(frameFor(level, options, i), i + 1 == frames);
+    times.push_back(result.last.milliseconds);
+  }
+  render::writePng(out, {renderer.width(), renderer.height(), renderer.pixels()});
+  result.milliseconds =
+      frames > 1 ? median(std::vector<double>(times.begin() + 1, times.end())) : times.front();
+  return result;
+}
+
+void printWarnings(const game::Level& level) {
+  for (const std::string& warning : level.warnings)
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+}
+
+// Renders a level headless, writes the PNG, prints timing. Returns the exit code.
+int renderLevel(const fs::path& levelFile, const Options& options, const fs::path& out) {
+  const game::Level level = game::loadLevel(levelFile);
+  printWarnings(level);
+  render::Context context(contextOptions(options));
+  render::ShaderCompiler compiler = makeCompiler(findDataRoot());
+  const uint32_t frames = options.frames.value_or(1);
+  const RenderResult result = renderToPng(context, compiler, level, options, frames, out);
+  std::printf("%s: %ux%u on %s (%s)\n", level.name.c_str(), options.width, options.height,
+              context.deviceInfo().name.c_str(), context.deviceInfo().driver.c_str());
+  std::printf("frame time %.2f ms%s, %.2f Mrays/s (%llu surface + %llu shadow/glass rays)\n",
+              result.milliseconds,
+              frames > 1 ? " (median after the first)" : " (first frame, includes shader JIT)",
+              double(result.last.rays()) / (result.milliseconds * 1000.0),
+              static_cast<unsigned long long>(result.last.surfaceRays),
+              static_cast<unsigned long long>(result.last.secondaryRays));
+  std::printf("wrote %s\n", fs::absolute(out).c_str());
+  return validationExitCode(context);
+}
+
+// Re-renders whenever the level or a file it uses changes; an invalid edit keeps the last
+// good image. Runs until interrupted, or until `watchLimit` renders.
+int watchLevel(const fs::path& levelFile, const Options& options, const fs::path& out) {
+  render::Context context(contextOptions(options));
+  render::ShaderCompiler compiler = makeCompiler(findDataRoot());
+  game::LevelWatcher watcher(levelFile);
+  std::printf("watching %s and the files it uses; Ctrl-C stops\n", levelFile.c_str());
+  std::fflush(stdout);
+  uint32_t renders = 0;
+  for (;;) {
+    switch (watcher.poll()) {
+      case game::LevelWatcher::Event::Unchanged:
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        continue;
+      case game::LevelWatcher::Event::Failed:
+        std::fprintf(stderr, "%s\n%s\n", watcher.error().c_str(),
+                     watcher.level() ? "(keeping the last good level)" : "(waiting for a fix)");
+        std::fflush(stderr);
+        continue;
+      case game::LevelWatcher::Event::Reloaded: {
+        const game::Level& level = *watcher.level();
+        printWarnings(level);
+        const RenderResult result = renderToPng(context, compiler, level, options, 1, out);
+        ++renders;
+        std::printf("%s %s -> %s (%.1f ms)\n", renders == 1 ? "rendered" : "reloaded",
+                    level.name.c_str(), fs::absolute(out).c_str(), result.milliseconds);
+        std::fflush(stdout);
+        if (options.watchLimit != 0 && renders >= options.watchLimit)
+          return validationExitCode(context);
+        break;
+      }
+    }
+  }
+}
+
+fs::path defaultOutput(const fs::path& levelFile) {
+  return fs::path("out") / (levelFile.stem().string() + ".png");
+}
+
+}  // namespace
+
+int commandRender(const Options& options) {
+  if (options.positional.size() != 1) throw UsageError("render: expected one level file");
+  const fs::path level = options.positional[0];
+  return renderLevel(level, options, options.out.value_or(defaultOutput(level)));
+}
+
+int commandPlay(const Options& options) {
+  fs::path level;
+  if (!options.positional.empty()) {
+    level = options.positional[0];
+  } else {
+    const auto levels = app::shippedLevels(app::findDataRoot());
+    if (levels.empty()) throw UsageError("play: no levels found in levels/");
+    level = levels.front();
+  }
+  const char* display = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  if ((display && *display) || (wayland && *wayland)) {
+    std::printf("The game window is not built yet; rendering %s headless instead.\n",
+                level.c_str());
+  } else {
+    std::printf("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering %s headless.\n",
+                level.c_str());
+  }
+  return renderLevel(level, options, options.out.value_or(defaultOutput(level)));
+}
+
+}  // namespace app
+
+namespace app {
+
+int commandPreview(const Options& options) {
+  if (options.positional.size() != 1) throw UsageError("preview: expected one level file");
+  const fs::path level = options.positional[0];
+  const fs::path out =
+      options.out.value_or(fs::path("out") / (level.stem().string() + ".preview.png"));
+  return options.watch ? watchLevel(level, options, out) : renderLevel(level, options, out);
+}
+
+}  // namespace app

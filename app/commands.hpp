@@ -1,0 +1,15 @@
+#pragma once
+// The `sightline` subcommands; each returns the process exit status.
+#include "app/options.hpp"
+
+namespace app {
+
+int commandPlay(const Options& options);
+int commandRender(const Options& options);
+int commandPreview(const Options& options);
+int commandBench(const Options& options);
+int commandValidate(const Options& options);
+int commandInfo(const Options& options);
+int commandDevices();
+
+}  // namespace app

@@ -1,0 +1,109 @@
+#include "app/options.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace app {
+
+const char* const kUsage = R"(usage: sightline <command> [options]
+
+commands:
+  play [level.json]            play (headless render until the window lands; see README)
+  render <level.json>          render a level headless and write a PNG
+  preview <level.json>         render a thumbnail from the spawn camera (--watch: re-render
+                               whenever the level or a file it uses is saved)
+  bench [level.json...]        time every shipped level (or the given ones)
+  validate <level.json...>     check levels and report the first error in each
+  info <level.json>            triangles, instances, lights and the features a level uses
+  devices                      list Vulkan devices and whether they can run Sightline
+
+options:
+  --size WxH          image size (render: 320x180)
+  --out FILE          PNG to write (render: out/<level>.png)
+  --frames N          frames to render (render: 1, bench: 300)
+  --tonemap MODE      aces (default) or identity (exposure, then clamp)
+  --exposure X        linear exposure multiplier (default 1)
+  --row-groups N      interleave launch rows in N groups (default 8, 1 = off)
+  --device SEL        device index or part of its name (see `sightline devices`)
+  --validate          enable the Vulkan validation layer (with synchronization checks)
+  --watch             preview: keep running and re-render on every save
+  --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
+)";
+
+namespace {
+
+uint32_t parseCount(const std::string& option, const std::string& text, uint32_t low,
+                    uint32_t high) {
+  try {
+    size_t used = 0;
+    const unsigned long value = std::stoul(text, &used);
+    if (used == text.size() && value >= low && value <= high) return static_cast<uint32_t>(value);
+  } catch (const std::exception&) {
+  }
+  throw UsageError(option + ": expected a whole number from " + std::to_string(low) + " to " +
+                   std::to_string(high) + ", got '" + text + "'");
+}
+
+void parseSize(const std::string& text, uint32_t* width, uint32_t* height) {
+  const size_t x = text.find('x');
+  if (x == std::string::npos) throw UsageError("--size: expected WIDTHxHEIGHT, got '" + text + "'");
+  *width = parseCount("--size width", text.substr(0, x), 1, 16384);
+  *height = parseCount("--size height", text.substr(x + 1), 1, 16384);
+}
+
+}  // namespace
+
+Options parseOptions(int argc, char** argv) {
+  Options options;
+  if (argc < 2) throw UsageError("missing command");
+  options.command = argv[1];
+  for (int i = 2; i < argc; ++i) {
+    const std::string argument = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) throw UsageError(argument + ": expected a value after it");
+      return argv[++i];
+    };
+    if (argument == "--size") {
+      parseSize(value(), &options.width, &options.height);
+      options.sizeGiven = true;
+    } else if (argument == "--out") {
+      options.out = value();
+    } else if (argument == "--frames") {
+      options.frames = parseCount("--frames", value(), 1, 1000000);
+    } else if (argument == "--tonemap") {
+      const std::string mode = value();
+      if (mode == "aces")
+        options.tonemap = render::Tonemap::Aces;
+      else if (mode == "identity")
+        options.tonemap = render::Tonemap::Identity;
+      else
+        throw UsageError("--tonemap: expected aces or identity, got '" + mode + "'");
+    } else if (argument == "--exposure") {
+      const std::string text = value();
+      char* end = nullptr;
+      options.exposure = std::strtof(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(options.exposure >= 0.0f) ||
+          !std::isfinite(options.exposure))
+        throw UsageError("--exposure: expected a number >= 0, got '" + text + "'");
+    } else if (argument == "--row-groups") {
+      options.rowGroups = parseCount("--row-groups", value(), 1, 64);
+    } else if (argument == "--device") {
+      options.device = value();
+    } else if (argument == "--validate") {
+      options.validate = true;
+    } else if (argument == "--watch") {
+      options.watch = true;
+    } else if (argument == "--watch-limit") {
+      options.watchLimit = parseCount("--watch-limit", value(), 1, 1000000);
+    } else if (argument == "--help" || argument == "-h") {
+      options.command = "help";
+    } else if (!argument.empty() && argument[0] == '-') {
+      throw UsageError("unknown option '" + argument + "'");
+    } else {
+      options.positional.push_back(argument);
+    }
+  }
+  return options;
+}
+
+}  // namespace app

@@ -1,0 +1,40 @@
+#pragma once
+// The `sightline` command line: one command, its arguments and options.
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "render/scene_desc.hpp"
+
+namespace app {
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+extern const char* const kUsage;
+
+struct Options {
+  std::string command;
+  std::vector<std::string> positional;
+  uint32_t width = 320, height = 180;
+  bool sizeGiven = false;
+  std::optional<std::filesystem::path> out;
+  std::optional<uint32_t> frames;
+  render::Tonemap tonemap = render::Tonemap::Aces;
+  float exposure = 1.0f;
+  uint32_t rowGroups = 8;
+  std::string device;
+  bool validate = false;
+  bool watch = false;
+  uint32_t watchLimit = 0;  // 0: no limit
+};
+
+// Throws UsageError naming the option and what was expected.
+Options parseOptions(int argc, char** argv);
+
+}  // namespace app

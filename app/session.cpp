@@ -1,0 +1,46 @@
+#include "app/session.hpp"
+
+#include <algorithm>
+#include <iostream>
+
+namespace app {
+namespace fs = std::filesystem;
+
+render::ContextOptions contextOptions(const Options& options) {
+  render::ContextOptions context;
+  context.validate = options.validate;
+  context.deviceSelector = options.device;
+  return context;
+}
+
+render::ShaderCompiler makeCompiler(const fs::path& dataRoot) {
+  return render::ShaderCompiler(dataRoot / "shaders",
+                                render::ShaderCompiler::defaultCacheDirectory());
+}
+
+render::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index) {
+  render::FrameDesc frame;
+  frame.camera = level.camera;
+  frame.exposure = options.exposure;
+  frame.tonemap = options.tonemap;
+  frame.frameIndex = index;
+  return frame;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const size_t middle = values.size() / 2;
+  return values.size() % 2 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
+}
+
+int validationExitCode(const render::Context& context) {
+  if (context.validationEnabled() && context.validationMessageCount() > 0) {
+    std::cerr << "sightline: " << context.validationMessageCount()
+              << " validation message(s) (see above)\n";
+    return 3;
+  }
+  return 0;
+}
+
+}  // namespace app

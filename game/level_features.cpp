@@ -1,0 +1,30 @@
+#include <algorithm>
+
+#include "game/level.hpp"
+
+namespace game {
+
+LevelFeatures levelFeatures(const Level& level) {
+  LevelFeatures features;
+  features.instances = level.entities.size();
+  features.lights = level.lights.size();
+  features.textures = !level.textures.empty();
+  for (const Entity& entity : level.entities) {
+    features.triangles += level.meshes[entity.mesh].indices.size() / 3;
+    const render::MaterialKind kind = level.materials[entity.material].kind;
+    features.glass = features.glass || kind == render::MaterialKind::Glass;
+    features.mirrors = features.mirrors || kind == render::MaterialKind::Mirror;
+    features.movers = features.movers || entity.mover.has_value();
+    features.interactables = features.interactables || entity.interactable.has_value();
+  }
+  features.mirrorBounces = features.mirrors ? std::min(level.maxMirrorBounces, 31u) : 0;
+  for (const render::LightDesc& light : level.lights) {
+    const bool hasExtent = light.type == render::LightType::Directional
+                               ? light.angularDiameterRadians > 0.0f
+                               : light.type != render::LightType::Point;
+    features.areaLights = features.areaLights || hasExtent;
+  }
+  return features;
+}
+
+}  // namespace game

@@ -1,0 +1,39 @@
+#include "render/pipeline_variant.hpp"
+
+#include <algorithm>
+
+namespace render {
+
+PipelineFeatures featuresOf(const SceneDesc& scene) {
+  PipelineFeatures features;
+  for (const InstanceDesc& instance : scene.instances) {
+    if (instance.material >= scene.materials.size()) continue;
+    const MaterialKind kind = scene.materials[instance.material].kind;
+    features.glass = features.glass || kind == MaterialKind::Glass;
+    features.mirrors = features.mirrors || kind == MaterialKind::Mirror;
+  }
+  features.maxMirrorBounces = features.mirrors ? std::min(scene.maxMirrorBounces, 31u) : 0;
+  return features;
+}
+
+PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
+  return {true, true, std::min(maxMirrorBounces, 31u)};
+}
+
+PipelineDescription describePipeline(const PipelineFeatures& features) {
+  PipelineDescription description;
+  description.misses = {"surface.rmiss", "shadow.rmiss"};
+  description.hitGroups = {"surface.rchit"};
+  if (features.glass) {
+    description.misses.push_back("glass.rmiss");
+    description.hitGroups.push_back("glass.rahit");
+  }
+  description.defines = {
+      {"HAS_GLASS", features.glass ? "1" : "0"},
+      {"HAS_MIRRORS", features.mirrors ? "1" : "0"},
+      {"MAX_MIRROR_BOUNCES", std::to_string(features.mirrors ? features.maxMirrorBounces : 0)},
+  };
+  return description;
+}
+
+}  // namespace render
