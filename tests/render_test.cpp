@@ -171,8 +171,8 @@ TEST_F(VulkanTest, ray_gen_counts_one_primary_ray_per_pixel_and_one_shadow_ray_p
   render::FrameDesc frame;
   frame.camera = level.camera;
   const render::FrameStats stats = renderer.renderFrame(frame, false);
-  EXPECT_EQ(stats.primaryRays, 200u);
-  EXPECT_EQ(stats.shadowRays, 200u);  // every pixel sees the floor, lit from above
+  EXPECT_EQ(stats.surfaceRays, 200u);
+  EXPECT_EQ(stats.secondaryRays, 200u);  // every pixel sees the floor, lit from above
 }
 
 TEST(VulkanValidation, layer_is_loaded_and_reports_a_provoked_error) {
