@@ -13,11 +13,17 @@ PipelineFeatures featuresOf(const SceneDesc& scene) {
     features.mirrors = features.mirrors || kind == MaterialKind::Mirror;
   }
   features.maxMirrorBounces = features.mirrors ? std::min(scene.maxMirrorBounces, 31u) : 0;
+  for (const LightDesc& light : scene.lights) {
+    const bool hasExtent = light.type == LightType::Directional
+                               ? light.angularDiameterRadians > 0.0f
+                               : light.type != LightType::Point;
+    features.softShadows = features.softShadows || hasExtent;
+  }
   return features;
 }
 
 PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
-  return {true, true, std::min(maxMirrorBounces, 31u)};
+  return {true, true, std::min(maxMirrorBounces, 31u), true};
 }
 
 PipelineDescription describePipeline(const PipelineFeatures& features) {
@@ -32,6 +38,7 @@ PipelineDescription describePipeline(const PipelineFeatures& features) {
       {"HAS_GLASS", features.glass ? "1" : "0"},
       {"HAS_MIRRORS", features.mirrors ? "1" : "0"},
       {"MAX_MIRROR_BOUNCES", std::to_string(features.mirrors ? features.maxMirrorBounces : 0)},
+      {"SOFT_SHADOWS", features.softShadows ? "1" : "0"},
   };
   return description;
 }

@@ -15,6 +15,7 @@ struct PipelineFeatures {
   bool glass = false;    // some visible instance has a glass material
   bool mirrors = false;  // some visible instance has a mirror material
   uint32_t maxMirrorBounces = 0;
+  bool softShadows = false;  // some light has extent: sampled visibility + denoiser
   bool operator==(const PipelineFeatures&) const = default;
 };
 

@@ -5,6 +5,8 @@
 #include <chrono>
 #include <cmath>
 
+#include <glm/gtc/matrix_access.hpp>
+
 #include "render/context.hpp"
 #include "render/gpu_types.hpp"
 #include "render/ray_tracing_pipeline.hpp"
@@ -105,8 +107,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
     if (instance.mesh >= ranges.size() || instance.material >= scene.materials.size())
       throw RenderError("an instance refers to a mesh or material that does not exist");
     const MeshRange& range = ranges[instance.mesh];
-    gpuInstances.push_back(
-        {glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0)});
+    gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0),
+                            {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
+    currentTransforms_.push_back(instance.objectToWorld);
     triangleCount_ += range.indexCount / 3;
   }
   auto textureSlot = [&](int32_t index) -> uint32_t {
@@ -188,9 +191,13 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   outputImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                                 VK_FORMAT_R8G8B8A8_UNORM,
                                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
+  const PipelineFeatures features =
+      options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
+  // No denoiser, no images or passes for it, in levels with hard shadows only.
+  if (features.softShadows)
+    denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
   createDescriptors();
-  createPipelines(compiler,
-                  options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene));
+  createPipelines(compiler, features);
 
   VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocateInfo.commandPool = context.commandPool();
@@ -230,32 +237,40 @@ void Renderer::createDescriptors() {
       {BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_PATHS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
+  constexpr uint32_t kSets = 2;
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
   std::vector<VkDescriptorPoolSize> poolSizes;
   for (const auto& [binding, type] : bindings) {
     layoutBindings.push_back({binding, type, 1, kAllStages, nullptr});
-    poolSizes.push_back({type, 1});
+    poolSizes.push_back({type, kSets});
   }
   const uint32_t textureCount = static_cast<uint32_t>(textures_.size());
   layoutBindings.push_back({BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                             textureCount, kRayStages, nullptr});
-  poolSizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount});
+  poolSizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount * kSets});
+  if (denoiser_) {
+    for (const auto& [binding, view] : denoiser_->bindings(0)) {
+      layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kAllStages, nullptr});
+      poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSets});
+    }
+  }
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
   layoutInfo.pBindings = layoutBindings.data();
   vkCheck(vkCreateDescriptorSetLayout(device, &layoutInfo, nullptr, &setLayout_),
           "vkCreateDescriptorSetLayout");
   VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
+  poolInfo.maxSets = kSets;
   poolInfo.poolSizeCount = static_cast<uint32_t>(poolSizes.size());
   poolInfo.pPoolSizes = poolSizes.data();
   vkCheck(vkCreateDescriptorPool(device, &poolInfo, nullptr, &descriptorPool_),
           "vkCreateDescriptorPool");
+  const std::array<VkDescriptorSetLayout, kSets> setLayouts = {setLayout_, setLayout_};
   VkDescriptorSetAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   allocateInfo.descriptorPool = descriptorPool_;
-  allocateInfo.descriptorSetCount = 1;
-  allocateInfo.pSetLayouts = &setLayout_;
-  vkCheck(vkAllocateDescriptorSets(device, &allocateInfo, &descriptorSet_),
+  allocateInfo.descriptorSetCount = kSets;
+  allocateInfo.pSetLayouts = setLayouts.data();
+  vkCheck(vkAllocateDescriptorSets(device, &allocateInfo, descriptorSets_.data()),
           "vkAllocateDescriptorSets");
 
   VkAccelerationStructureKHR tlas = topLevel_->structure().handle();
@@ -263,9 +278,6 @@ void Renderer::createDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   tlasWrite.accelerationStructureCount = 1;
   tlasWrite.pAccelerationStructures = &tlas;
-  const VkDescriptorImageInfo hdrInfo{VK_NULL_HANDLE, hdrImage_->view(), VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo outputInfo{VK_NULL_HANDLE, outputImage_->view(),
-                                         VK_IMAGE_LAYOUT_GENERAL};
   const std::array<std::pair<uint32_t, const Buffer*>, 8> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
@@ -276,38 +288,55 @@ void Renderer::createDescriptors() {
       {BINDING_COUNTERS, &counters_},
       {BINDING_PATHS, &paths_},
   }};
-  std::array<VkDescriptorBufferInfo, 8> bufferInfos{};
-  std::vector<VkWriteDescriptorSet> writes;
-  auto write = [&](uint32_t binding, VkDescriptorType type) -> VkWriteDescriptorSet& {
-    VkWriteDescriptorSet entry{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-    entry.dstSet = descriptorSet_;
-    entry.dstBinding = binding;
-    entry.descriptorCount = 1;
-    entry.descriptorType = type;
-    writes.push_back(entry);
-    return writes.back();
-  };
-  write(BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR).pNext = &tlasWrite;
-  write(BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).pImageInfo = &hdrInfo;
-  write(BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).pImageInfo = &outputInfo;
-  for (size_t i = 0; i < buffers.size(); ++i) {
-    bufferInfos[i] = {buffers[i].second->handle(), 0, VK_WHOLE_SIZE};
-    write(buffers[i].first, buffers[i].first == BINDING_FRAME ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
-        .pBufferInfo = &bufferInfos[i];
-  }
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)
     textureInfos.push_back({sampler_, texture->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
-  VkWriteDescriptorSet& textureWrite =
-      write(BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);
-  textureWrite.descriptorCount = textureCount;
-  textureWrite.pImageInfo = textureInfos.data();
-  vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  for (uint32_t parity = 0; parity < kSets; ++parity) {
+    std::vector<std::pair<uint32_t, VkImageView>> storageImages = {
+        {BINDING_HDR_IMAGE, hdrImage_->view()}, {BINDING_OUTPUT_IMAGE, outputImage_->view()}};
+    if (denoiser_) {
+      for (const auto& entry : denoiser_->bindings(parity)) storageImages.push_back(entry);
+    }
+    // Infos are sized up front: writes point into them.
+    std::vector<VkDescriptorImageInfo> imageInfos;
+    for (const auto& [binding, view] : storageImages)
+      imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+    std::vector<VkDescriptorBufferInfo> bufferInfos;
+    for (const auto& [binding, buffer] : buffers)
+      bufferInfos.push_back({buffer->handle(), 0, VK_WHOLE_SIZE});
+    std::vector<VkWriteDescriptorSet> writes;
+    auto write = [&](uint32_t binding, VkDescriptorType type, uint32_t count) {
+      VkWriteDescriptorSet entry{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+      entry.dstSet = descriptorSets_[parity];
+      entry.dstBinding = binding;
+      entry.descriptorCount = count;
+      entry.descriptorType = type;
+      writes.push_back(entry);
+      return writes.size() - 1;
+    };
+    writes[write(BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1)].pNext =
+        &tlasWrite;
+    for (size_t i = 0; i < storageImages.size(); ++i) {
+      writes[write(storageImages[i].first, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1)].pImageInfo =
+          &imageInfos[i];
+    }
+    for (size_t i = 0; i < buffers.size(); ++i) {
+      const VkDescriptorType type = buffers[i].first == BINDING_FRAME
+                                        ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+                                        : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+      writes[write(buffers[i].first, type, 1)].pBufferInfo = &bufferInfos[i];
+    }
+    writes[write(BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount)]
+        .pImageInfo = textureInfos.data();
+    vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
+  }
 
+  const VkPushConstantRange pushConstants{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(AtrousIteration)};
   VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   pipelineLayoutInfo.setLayoutCount = 1;
   pipelineLayoutInfo.pSetLayouts = &setLayout_;
+  pipelineLayoutInfo.pushConstantRangeCount = 1;
+  pipelineLayoutInfo.pPushConstantRanges = &pushConstants;
   vkCheck(vkCreatePipelineLayout(device, &pipelineLayoutInfo, nullptr, &pipelineLayout_),
           "vkCreatePipelineLayout");
 }
@@ -329,25 +358,34 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   program.recursionDepth = pipelineDescription_.recursionDepth;
   rayTracingPipeline_ = std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, program);
 
-  const std::vector<uint32_t> tonemap = compiler.compile("tonemap.comp").spirv;
-  VkShaderModule module = createShaderModule(context_, tonemap, "tonemap");
-  VkComputePipelineCreateInfo createInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-  createInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  createInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-  createInfo.stage.module = module;
-  createInfo.stage.pName = "main";
-  createInfo.layout = pipelineLayout_;
-  VkResult result = vkCreateComputePipelines(context_.device(), VK_NULL_HANDLE, 1, &createInfo,
-                                             nullptr, &tonemapPipeline_);
-  vkDestroyShaderModule(context_.device(), module, nullptr);
-  vkCheck(result, "vkCreateComputePipelines");
-  context_.setName(tonemapPipeline_, VK_OBJECT_TYPE_PIPELINE, "tonemap pipeline");
+  tonemapPipeline_ = createComputePipeline(
+      context_, pipelineLayout_,
+      compiler.compile("tonemap.comp", {{"SOFT_SHADOWS", features.softShadows ? "1" : "0"}}).spirv,
+      "tonemap");
+  if (denoiser_) denoiser_->createPipelines(compiler, pipelineLayout_);
 }
 
 void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
   if (objectToWorld.size() != topLevel_->instanceCount())
     throw RenderError("setInstanceTransforms: expected one transform per instance");
   pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
+}
+
+// Each instance's previous-from-current transform: what moved since the last frame, so the
+// denoiser reprojects moving objects; identity again once they stop.
+void Renderer::writeInstanceMotion() {
+  if (pendingTransforms_.empty() && !instancesMoved_) return;
+  for (size_t i = 0; i < currentTransforms_.size(); ++i) {
+    glm::mat4 previousFromCurrent(1.0f);
+    if (!pendingTransforms_.empty()) {
+      previousFromCurrent = currentTransforms_[i] * glm::inverse(pendingTransforms_[i]);
+      currentTransforms_[i] = pendingTransforms_[i];
+    }
+    glm::vec4 rows[3];
+    for (int row = 0; row < 3; ++row) rows[row] = glm::row(previousFromCurrent, row);
+    instances_.write(rows, sizeof rows, i * sizeof(gpu::GpuInstance) + sizeof(glm::uvec4));
+  }
+  instancesMoved_ = !pendingTransforms_.empty();
 }
 
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
@@ -389,7 +427,17 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
       glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
+  // Reprojection needs the previous frame's camera; without one the history starts afresh.
+  const bool reset = frame.resetHistory || !previousUniforms_;
+  const gpu::FrameUniforms& previous = previousUniforms_ ? *previousUniforms_ : uniforms;
+  uniforms.previousCameraPosition = previous.cameraPosition;
+  uniforms.previousCameraRight = previous.cameraRight;
+  uniforms.previousCameraUp = previous.cameraUp;
+  uniforms.previousCameraForward = previous.cameraForward;
+  uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
+                                denoiserIterations(frame), 0u);
   frameUniforms_.write(&uniforms, sizeof uniforms);
+  previousUniforms_ = uniforms;
 }
 
 void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
@@ -404,21 +452,29 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                   VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR);
   }
-  // The previous frame's tonemap and copy read what this frame's trace and tonemap overwrite.
-  memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+  // Earlier frames' passes read and wrote what this frame's trace and passes overwrite.
+  memoryBarrier(commands,
+                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
+                    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                0);
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR,
                     rayTracingPipeline_->handle());
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
-                          &descriptorSet_, 0, nullptr);
+                          &descriptorSets_[parity_], 0, nullptr);
   rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
   memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
-                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
+  if (denoiser_) {
+    denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  }
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
-                          &descriptorSet_, 0, nullptr);
+                          &descriptorSets_[parity_], 0, nullptr);
   vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
   if (readback) {
     imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_GENERAL,
@@ -439,7 +495,24 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   }
 }
 
+uint32_t Renderer::denoiserIterations(const FrameDesc& frame) const {
+  return frame.referenceAccumulation ? 0u : std::min(options_.denoiserIterations, 5u);
+}
+
+std::vector<glm::vec4> Renderer::readDenoiser(DenoiserImage which) const {
+  if (!denoiser_) throw RenderError("readDenoiser: this scene has no soft shadows");
+  // The last frame rendered used the parity before the current one.
+  return denoiser_->read(which, parity_ ^ 1u, lastIterations_);
+}
+
+void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments) {
+  if (!denoiser_) throw RenderError("fillDenoiserHistory: this scene has no soft shadows");
+  denoiser_->fillHistory(parity_, history, moments);
+}
+
 FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
+  lastIterations_ = denoiserIterations(frame);
+  writeInstanceMotion();
   writeFrameUniforms(frame);
   const gpu::FrameCounters zero{};
   counters_.write(&zero, sizeof zero);
@@ -471,6 +544,7 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
     pixels_.resize(readback_.size());
     readback_.read(pixels_.data(), pixels_.size());
   }
+  parity_ ^= 1u;
   return stats;
 }
 

@@ -7,8 +7,12 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
+#include <optional>
 #include "render/acceleration_structure.hpp"
+
 #include "render/buffer.hpp"
+#include "render/denoiser.hpp"
 #include "render/gpu_types.hpp"
 #include "render/pipeline_variant.hpp"
 #include "render/scene_desc.hpp"
@@ -29,6 +33,7 @@ struct RendererOptions {
   uint32_t rowGroups = 8;
   // Build the all-features pipeline instead of the scene's own variant (for measuring it).
   bool allFeatures = false;
+  uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
 };
 
 struct FrameStats {
@@ -57,6 +62,12 @@ class Renderer {
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
+  // Soft-shadow denoiser images of the last frame (test and debugging hook; waits).
+  std::vector<glm::vec4> readDenoiser(DenoiserImage which) const;
+  // Replaces the history the next frame reprojects (test hook: long histories, NaN).
+  void fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments);
+  bool softShadows() const { return denoiser_ != nullptr; }
+
   // What each pixel's path reached in the last frame (rows top to bottom).
   std::vector<gpu::PixelPath> pixelPaths() const;
   const PipelineDescription& pipelineDescription() const { return pipelineDescription_; }
@@ -68,6 +79,8 @@ class Renderer {
   void createDescriptors();
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features);
   void writeFrameUniforms(const FrameDesc& frame);
+  void writeInstanceMotion();
+  uint32_t denoiserIterations(const FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback);
 
   const Context& context_;
@@ -97,7 +110,13 @@ class Renderer {
 
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptorPool_ = VK_NULL_HANDLE;
-  VkDescriptorSet descriptorSet_ = VK_NULL_HANDLE;
+  std::array<VkDescriptorSet, 2> descriptorSets_{};  // by frame parity (denoiser ping-pong)
+  uint32_t parity_ = 0;
+  uint32_t lastIterations_ = 0;
+  std::unique_ptr<Denoiser> denoiser_;
+  std::optional<gpu::FrameUniforms> previousUniforms_;  // for reprojection; none: reset
+  std::vector<glm::mat4> currentTransforms_;
+  bool instancesMoved_ = false;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

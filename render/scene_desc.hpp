@@ -108,7 +108,11 @@ struct FrameDesc {
   CameraDesc camera;
   float exposure = 1.0f;  // linear multiplier applied before the tonemap
   Tonemap tonemap = Tonemap::Aces;
-  uint32_t frameIndex = 0;
+  uint32_t frameIndex = 0;  // seeds the sample sequences; advance it every frame
+  // Soft shadows: forget the denoiser's history (a camera cut or teleport).
+  bool resetHistory = false;
+  // Soft shadows: average raw samples over frames with no filtering (ground truth).
+  bool referenceAccumulation = false;
 };
 
 }  // namespace render

@@ -25,6 +25,20 @@ using uint = uint32_t;
 #define BINDING_COUNTERS 9
 #define BINDING_TEXTURES 10
 #define BINDING_PATHS 11
+// Soft shadows: what ray-gen writes for the denoiser, and the denoiser's own images.
+#define BINDING_SOFT_LIGHT 12      // rgba16f: unshadowed light of the sampled (soft) lights
+#define BINDING_VISIBILITY_RAW 13  // rgba16f: this frame's visibility estimate
+#define BINDING_SURFACE 14         // rgba32f: world normal, distance from the camera (< 0: sky)
+#define BINDING_SURFACE_PREVIOUS 15
+#define BINDING_INSTANCE 16  // r32ui: instance + 1 (0: sky)
+#define BINDING_INSTANCE_PREVIOUS 17
+#define BINDING_MOTION 18        // rgba32f: previous pixel position xy, expected distance z
+#define BINDING_HISTORY 19       // rgba32f: rgb visibility history (previous frame)
+#define BINDING_MOMENTS 20       // rgba32f: luminance moments x, y; history length z (prev.)
+#define BINDING_MOMENTS_NEXT 21  // this frame's moments
+#define BINDING_FILTER_A 22      // rgba16f: rgb visibility, a variance (ping)
+#define BINDING_FILTER_B 23      // (pong)
+#define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -57,19 +71,27 @@ using uint = uint32_t;
 #define VERTEX_FLOATS 8
 
 struct FrameUniforms {
-  vec4 cameraPosition;    // xyz
-  vec4 cameraRight;       // xyz: right * tan(fov/2) * aspect
-  vec4 cameraUp;          // xyz: up * tan(fov/2)
-  vec4 cameraForward;     // xyz: unit forward
-  vec4 skyZenith;         // linear radiance
-  vec4 skyHorizon;        // linear radiance
-  vec4 ambient;           // linear radiance of a uniform, unshadowed environment
-  uvec4 sizeFrameLights;  // width, height, frame index, light count
-  vec4 exposureTonemap;   // x: exposure, y: tonemap mode (as float), z: row groups
+  vec4 cameraPosition;          // xyz
+  vec4 cameraRight;             // xyz: right * tan(fov/2) * aspect
+  vec4 cameraUp;                // xyz: up * tan(fov/2)
+  vec4 cameraForward;           // xyz: unit forward
+  vec4 skyZenith;               // linear radiance
+  vec4 skyHorizon;              // linear radiance
+  vec4 ambient;                 // linear radiance of a uniform, unshadowed environment
+  uvec4 sizeFrameLights;        // width, height, frame index, light count
+  vec4 exposureTonemap;         // x: exposure, y: tonemap mode (as float), z: row groups
+  vec4 previousCameraPosition;  // the previous frame's camera, for reprojection
+  vec4 previousCameraRight;
+  vec4 previousCameraUp;
+  vec4 previousCameraForward;
+  uvec4 denoise;  // x: reset history, y: reference accumulation, z: filter iterations
 };
 
 struct GpuInstance {
   uvec4 geometry;  // x: first index, y: vertex offset, z: material, w: unused
+  // Rows of the previous frame's object-to-world times the current world-to-object: where a
+  // point on this instance was one frame ago (identity when it did not move).
+  vec4 previousFromCurrent[3];
 };
 
 struct GpuMaterial {

@@ -9,6 +9,7 @@
 #include "game/primitives.hpp"
 #include "render/color.hpp"
 #include "render/pipeline_variant.hpp"
+#include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
@@ -17,24 +18,8 @@ using render::MaterialDesc;
 using render::MaterialKind;
 using test::channel;
 
-// Builds scenes in code: meshes, materials and instances by index.
-struct SceneBuilder {
-  render::SceneDesc scene;
-
-  uint32_t mesh(render::MeshData data) {
-    scene.meshes.push_back(std::move(data));
-    return uint32_t(scene.meshes.size() - 1);
-  }
-  uint32_t material(const MaterialDesc& material) {
-    scene.materials.push_back(material);
-    return uint32_t(scene.materials.size() - 1);
-  }
-  uint32_t instance(uint32_t mesh, uint32_t material, const glm::mat4& transform,
-                    bool castsShadow = true) {
-    scene.instances.push_back({mesh, material, transform, castsShadow});
-    return uint32_t(scene.instances.size() - 1);
-  }
-};
+using test::at;
+using test::SceneBuilder;
 
 MaterialDesc emissive(const glm::vec3& radiance) {
   MaterialDesc material;
@@ -55,10 +40,6 @@ MaterialDesc mirror(const glm::vec3& tint = glm::vec3(1.0f)) {
   material.kind = MaterialKind::Mirror;
   material.mirrorTint = tint;
   return material;
-}
-
-glm::mat4 at(const glm::vec3& position) {
-  return glm::translate(glm::mat4(1.0f), position);
 }
 
 int expectedByte(double linear) {
@@ -193,7 +174,8 @@ TEST_F(GlassMirrorTest, parallel_mirrors_stop_at_the_bounce_cap_without_nan) {
     builder.scene.environment.skyHorizon = glm::vec3(0.5f);
     builder.scene.maxMirrorBounces = cap;
     const Frame frame = render(builder.scene, 9, 9);
-    EXPECT_EQ(frame.pipeline.defines.back().second, std::to_string(cap));
+    EXPECT_EQ(frame.pipeline.defines[2],
+              (std::pair<std::string, std::string>{"MAX_MIRROR_BOUNCES", std::to_string(cap)}));
     const render::gpu::PixelPath centre = frame.paths[4 * 9 + 4];
     EXPECT_EQ(centre.bounces, cap) << "cap " << cap;
     EXPECT_EQ(centre.finalInstance, PATH_REACHED_NOTHING);
@@ -287,9 +269,10 @@ TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelin
   EXPECT_EQ(plain.misses, (std::vector<std::string>{"surface.rmiss", "shadow.rmiss"}));
   EXPECT_EQ(plain.hitGroups, (std::vector<std::string>{"surface.rchit"}));
   EXPECT_EQ(plain.recursionDepth, 1u);
-  EXPECT_EQ(plain.defines,
-            (render::ShaderDefines{
-                {"HAS_GLASS", "0"}, {"HAS_MIRRORS", "0"}, {"MAX_MIRROR_BOUNCES", "0"}}));
+  EXPECT_EQ(plain.defines, (render::ShaderDefines{{"HAS_GLASS", "0"},
+                                                  {"HAS_MIRRORS", "0"},
+                                                  {"MAX_MIRROR_BOUNCES", "0"},
+                                                  {"SOFT_SHADOWS", "0"}}));
 
   const render::PipelineDescription withGlass = render::describePipeline({true, false, 0});
   EXPECT_EQ(withGlass.misses,
@@ -299,10 +282,16 @@ TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelin
 
   const render::PipelineDescription withMirrors = render::describePipeline({false, true, 4});
   EXPECT_EQ(withMirrors.hitGroups, (std::vector<std::string>{"surface.rchit"}));
-  EXPECT_EQ(withMirrors.defines,
-            (render::ShaderDefines{
-                {"HAS_GLASS", "0"}, {"HAS_MIRRORS", "1"}, {"MAX_MIRROR_BOUNCES", "4"}}));
+  EXPECT_EQ(withMirrors.defines, (render::ShaderDefines{{"HAS_GLASS", "0"},
+                                                        {"HAS_MIRRORS", "1"},
+                                                        {"MAX_MIRROR_BOUNCES", "4"},
+                                                        {"SOFT_SHADOWS", "0"}}));
   EXPECT_EQ(withMirrors.recursionDepth, 1u);
+
+  const render::PipelineDescription soft = render::describePipeline({false, false, 0, true});
+  EXPECT_EQ(soft.hitGroups, (std::vector<std::string>{"surface.rchit"}));
+  EXPECT_EQ(soft.defines.back(), (std::pair<std::string, std::string>{"SOFT_SHADOWS", "1"}));
+  EXPECT_EQ(soft.recursionDepth, 1u);
 }
 
 TEST(PipelineVariant, features_follow_the_materials_instances_use) {

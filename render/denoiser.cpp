@@ -1,0 +1,205 @@
+#include "render/denoiser.hpp"
+
+#include <glm/gtc/packing.hpp>
+
+#include "render/buffer.hpp"
+#include "render/context.hpp"
+#include "render/ray_tracing_pipeline.hpp"
+#include "render/shader_compiler.hpp"
+#include "render/vulkan_error.hpp"
+#include "shaders/shared_types.h"
+
+namespace render {
+namespace {
+
+constexpr VkImageUsageFlags kDebugUsage =
+    VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+
+void computeBarrier(VkCommandBuffer commands) {
+  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+  barrier.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+  barrier.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &barrier, 0, nullptr, 0,
+                       nullptr);
+}
+
+void layoutBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
+  VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
+  barrier.srcAccessMask = srcAccess;
+  barrier.dstAccessMask = dstAccess;
+  barrier.oldLayout = from;
+  barrier.newLayout = to;
+  barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  barrier.image = image;
+  barrier.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1, &barrier);
+}
+
+}  // namespace
+
+VkPipeline createComputePipeline(const Context& context, VkPipelineLayout layout,
+                                 const std::vector<uint32_t>& spirv, const char* name) {
+  VkShaderModule module = createShaderModule(context, spirv, name);
+  VkComputePipelineCreateInfo createInfo{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+  createInfo.stage = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  createInfo.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+  createInfo.stage.module = module;
+  createInfo.stage.pName = "main";
+  createInfo.layout = layout;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkResult result = vkCreateComputePipelines(context.device(), VK_NULL_HANDLE, 1, &createInfo,
+                                             nullptr, &pipeline);
+  vkDestroyShaderModule(context.device(), module, nullptr);
+  vkCheck(result, "vkCreateComputePipelines");
+  context.setName(pipeline, VK_OBJECT_TYPE_PIPELINE, name);
+  return pipeline;
+}
+
+Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
+    : context_(context), width_(width), height_(height) {
+  auto make = [&](VkFormat format, const char* name) {
+    return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
+  };
+  softLight_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "soft light");
+  visibilityRaw_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "raw visibility");
+  motion_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "motion");
+  filterA_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter ping");
+  filterB_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter pong");
+  for (int parity = 0; parity < 2; ++parity) {
+    const std::string suffix = parity ? " (odd frames)" : " (even frames)";
+    surface_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("surface" + suffix).c_str());
+    instance_[parity] = make(VK_FORMAT_R32_UINT, ("instance" + suffix).c_str());
+    history_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("history" + suffix).c_str());
+    moments_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("moments" + suffix).c_str());
+  }
+  // Start with an empty history: length 0 everywhere, whatever the memory held.
+  for (int parity = 0; parity < 2; ++parity)
+    fillHistory(uint32_t(parity), glm::vec4(1.0f), glm::vec4(0.0f));
+}
+
+Denoiser::~Denoiser() {
+  VkDevice device = context_.device();
+  if (temporal_) vkDestroyPipeline(device, temporal_, nullptr);
+  if (atrous_) vkDestroyPipeline(device, atrous_, nullptr);
+}
+
+std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity) const {
+  const uint32_t current = parity & 1u, previous = current ^ 1u;
+  return {
+      {BINDING_SOFT_LIGHT, softLight_->view()},
+      {BINDING_VISIBILITY_RAW, visibilityRaw_->view()},
+      {BINDING_SURFACE, surface_[current]->view()},
+      {BINDING_SURFACE_PREVIOUS, surface_[previous]->view()},
+      {BINDING_INSTANCE, instance_[current]->view()},
+      {BINDING_INSTANCE_PREVIOUS, instance_[previous]->view()},
+      {BINDING_MOTION, motion_->view()},
+      {BINDING_HISTORY, history_[previous]->view()},
+      {BINDING_HISTORY_NEXT, history_[current]->view()},
+      {BINDING_MOMENTS, moments_[previous]->view()},
+      {BINDING_MOMENTS_NEXT, moments_[current]->view()},
+      {BINDING_FILTER_A, filterA_->view()},
+      {BINDING_FILTER_B, filterB_->view()},
+  };
+}
+
+void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout) {
+  temporal_ = createComputePipeline(
+      context_, layout, compiler.compile("denoise_temporal.comp").spirv, "denoise temporal");
+  atrous_ = createComputePipeline(context_, layout, compiler.compile("denoise_atrous.comp").spirv,
+                                  "denoise a-trous");
+}
+
+void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
+                      uint32_t iterations) const {
+  const uint32_t groupsX = (width_ + 7) / 8, groupsY = (height_ + 7) / 8;
+  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
+  vkCmdDispatch(commands, groupsX, groupsY, 1);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, atrous_);
+  for (uint32_t i = 0; i < iterations; ++i) {
+    computeBarrier(commands);
+    const AtrousIteration iteration{int32_t(1u << i), i % 2 == 0 ? 1 : 0, i == 0 ? 1 : 0};
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof iteration,
+                       &iteration);
+    vkCmdDispatch(commands, groupsX, groupsY, 1);
+  }
+}
+
+const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
+                                       uint32_t iterations) const {
+  switch (which) {
+    case DenoiserImage::RawVisibility:
+      return *visibilityRaw_;
+    case DenoiserImage::Denoised:
+      return iterations % 2 == 0 ? *filterA_ : *filterB_;
+    case DenoiserImage::Moments:
+      return *moments_[parity & 1u];
+  }
+  return *filterA_;
+}
+
+std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
+                                      uint32_t iterations) const {
+  const StorageImage& image = imageFor(which, parity, iterations);
+  const bool halfFloats = which != DenoiserImage::Moments;
+  const VkDeviceSize texelBytes = halfFloats ? 8 : 16;
+  Buffer staging(context_, texelBytes * width_ * height_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 MemoryUse::Readback, "denoiser readback");
+  context_.submitAndWait([&](VkCommandBuffer commands) {
+    layoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width_, height_, 1};
+    vkCmdCopyImageToBuffer(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           staging.handle(), 1, &region);
+    layoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                  VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
+                         &toHost, 0, nullptr, 0, nullptr);
+  });
+  std::vector<glm::vec4> texels(size_t(width_) * height_);
+  if (halfFloats) {
+    std::vector<uint64_t> packed(texels.size());
+    staging.read(packed.data(), packed.size() * sizeof(uint64_t));
+    for (size_t i = 0; i < texels.size(); ++i) texels[i] = glm::unpackHalf4x16(packed[i]);
+  } else {
+    staging.read(texels.data(), texels.size() * sizeof(glm::vec4));
+  }
+  return texels;
+}
+
+void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,
+                           const glm::vec4& moments) const {
+  const uint32_t previous = (nextParity & 1u) ^ 1u;
+  context_.submitAndWait([&](VkCommandBuffer commands) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (const auto& [image, value] : {std::pair{history_[previous]->image(), history},
+                                       std::pair{moments_[previous]->image(), moments}}) {
+      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT);
+      VkClearColorValue color{};
+      color.float32[0] = value.x;
+      color.float32[1] = value.y;
+      color.float32[2] = value.z;
+      color.float32[3] = value.w;
+      vkCmdClearColorImage(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1,
+                           &range);
+      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+  });
+}
+
+}  // namespace render

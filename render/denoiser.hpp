@@ -1,0 +1,69 @@
+#pragma once
+// Soft-shadow denoiser: the images ray-gen fills for it, its history, and its compute passes
+// (temporal reprojection with moments, then edge-avoiding a-trous iterations).
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+
+#include "render/storage_image.hpp"
+
+namespace render {
+
+class Context;
+class ShaderCompiler;
+
+enum class DenoiserImage {
+  RawVisibility,  // this frame's one-sample visibility (rgb)
+  Denoised,       // after the last filter iteration (rgb), variance (a)
+  Moments,        // this frame's luminance moments (x, y) and history length (z)
+};
+
+class Denoiser {
+ public:
+  Denoiser(const Context& context, uint32_t width, uint32_t height);
+  ~Denoiser();
+  Denoiser(const Denoiser&) = delete;
+  Denoiser& operator=(const Denoiser&) = delete;
+
+  // Storage images by binding for frame parity 0 or 1: "previous" bindings get the other
+  // parity's images, so nothing is copied between frames.
+  std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
+
+  void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout);
+
+  // Temporal pass then `iterations` a-trous passes; the caller has ordered ray-gen's writes
+  // before and orders the tonemap's reads after.
+  void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
+              uint32_t iterations) const;
+
+  // Test and debugging hooks (they submit and wait).
+  std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
+  // Overwrites the history the next frame (of parity `nextParity`) will read.
+  void fillHistory(uint32_t nextParity, const glm::vec4& history, const glm::vec4& moments) const;
+
+ private:
+  const StorageImage& imageFor(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
+
+  const Context& context_;
+  uint32_t width_, height_;
+  std::unique_ptr<StorageImage> softLight_, visibilityRaw_, motion_, filterA_, filterB_;
+  std::array<std::unique_ptr<StorageImage>, 2> surface_, instance_, history_, moments_;
+  VkPipeline temporal_ = VK_NULL_HANDLE;
+  VkPipeline atrous_ = VK_NULL_HANDLE;
+};
+
+// Push constants of one a-trous iteration (matches denoise_atrous.comp).
+struct AtrousIteration {
+  int32_t stepSize;
+  int32_t readFromA;
+  int32_t writeHistory;
+};
+
+VkPipeline createComputePipeline(const Context& context, VkPipelineLayout layout,
+                                 const std::vector<uint32_t>& spirv, const char* name);
+
+}  // namespace render

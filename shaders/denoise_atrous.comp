@@ -1,0 +1,63 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+#define DENOISER_BINDINGS
+#include "frame_bindings.glsl"
+#include "denoise_common.glsl"
+
+// One edge-avoiding a-trous iteration (3x3 taps spaced `stepSize` apart), stopped by depth,
+// normal, instance and visibility differences scaled by the estimated variance. Weighted
+// differences from the centre keep uniform regions exactly as they are (fully lit stays 1).
+layout(push_constant) uniform Iteration {
+  int stepSize;
+  int readFromA;      // 1: A -> B, 0: B -> A
+  int writeHistory;   // the first iteration's output is the next frame's history
+} iteration;
+
+vec4 loadFiltered(ivec2 pixel) {
+  return iteration.readFromA != 0 ? imageLoad(filterAImage, pixel)
+                                  : imageLoad(filterBImage, pixel);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (!insideImage(pixel)) return;
+  vec4 centre = loadFiltered(pixel);
+  vec4 surface = imageLoad(surfaceImage, pixel);
+  uint instance = imageLoad(instanceImage, pixel).x;
+  vec4 result = centre;
+  if (surface.w >= 0.0) {
+    const float kernel[3] = float[3](0.25, 0.5, 0.25);
+    float centreLuminance = luminance(centre.rgb);
+    float luminanceScale = 4.0 * sqrt(max(centre.a, 0.0)) + 1e-4;
+    float depthScale = 0.02 * surface.w * float(iteration.stepSize) + 1e-3;
+    float weightSum = kernel[1] * kernel[1];
+    vec3 differenceSum = vec3(0.0);
+    float varianceSum = weightSum * weightSum * centre.a;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        if (dx == 0 && dy == 0) continue;
+        ivec2 tap = pixel + ivec2(dx, dy) * iteration.stepSize;
+        if (!insideImage(tap)) continue;
+        if (imageLoad(instanceImage, tap).x != instance) continue;
+        vec4 tapSurface = imageLoad(surfaceImage, tap);
+        vec4 value = loadFiltered(tap);
+        float weight = kernel[dx + 1] * kernel[dy + 1] *
+                       exp(-abs(tapSurface.w - surface.w) / depthScale) *
+                       pow(max(dot(tapSurface.xyz, surface.xyz), 0.0), 64.0) *
+                       exp(-abs(luminance(value.rgb) - centreLuminance) / luminanceScale);
+        differenceSum += weight * (value.rgb - centre.rgb);
+        weightSum += weight;
+        varianceSum += weight * weight * value.a;
+      }
+    }
+    result = vec4(clamp(centre.rgb + differenceSum / weightSum, 0.0, 1.0),
+                  varianceSum / (weightSum * weightSum));
+  }
+  if (iteration.readFromA != 0) {
+    imageStore(filterBImage, pixel, result);
+  } else {
+    imageStore(filterAImage, pixel, result);
+  }
+  if (iteration.writeHistory != 0) imageStore(historyNextImage, pixel, vec4(result.rgb, 0.0));
+}

@@ -1,0 +1,95 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+#define DENOISER_BINDINGS
+#include "frame_bindings.glsl"
+#include "denoise_common.glsl"
+
+// Temporal pass: reproject last frame's history, reject it where the surface changed (depth,
+// normal, instance), clamp it to the current 3x3 neighbourhood, and blend in this frame's
+// sample; also keeps luminance moments for the variance the spatial filter steers by.
+// In reference mode it is a plain running average with no clamping and no cap.
+
+const float MAX_HISTORY_LENGTH = 32.0;  // the oldest weight stays >= 1/32: a bounded lag
+const float NEIGHBOURHOOD_SIGMAS = 2.0;
+const float RELATIVE_DEPTH_TOLERANCE = 0.05;
+const float NORMAL_COSINE_TOLERANCE = 0.9;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (!insideImage(pixel)) return;
+  bool reset = frame.denoise.x != 0u;
+  bool reference = frame.denoise.y != 0u;
+  vec3 current = rawVisibility(pixel);
+  vec4 surface = imageLoad(surfaceImage, pixel);
+  uint instance = imageLoad(instanceImage, pixel).x;
+
+  vec3 sum = vec3(0.0), sumSquares = vec3(0.0);
+  float count = 0.0;
+  for (int dy = -1; dy <= 1; ++dy) {
+    for (int dx = -1; dx <= 1; ++dx) {
+      ivec2 neighbour = pixel + ivec2(dx, dy);
+      if (!insideImage(neighbour)) continue;
+      vec3 value = rawVisibility(neighbour);
+      sum += value;
+      sumSquares += value * value;
+      count += 1.0;
+    }
+  }
+  vec3 mean = sum / count;
+  vec3 sigma = sqrt(max(sumSquares / count - mean * mean, vec3(0.0)));
+
+  vec3 history = current;
+  vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
+  float historyLength = 0.0;
+  vec4 motion = imageLoad(motionImage, pixel);
+  if (!reset && surface.w >= 0.0 && motion.z >= 0.0) {
+    vec2 previous = reference ? vec2(pixel) : motion.xy;
+    float expectedDistance = reference ? surface.w : motion.z;
+    ivec2 base = ivec2(floor(previous));
+    vec2 f = previous - vec2(base);
+    vec3 historySum = vec3(0.0);
+    vec3 momentsSum = vec3(0.0);
+    float weightSum = 0.0;
+    for (int j = 0; j <= 1; ++j) {
+      for (int i = 0; i <= 1; ++i) {
+        ivec2 tap = base + ivec2(i, j);
+        if (!insideImage(tap)) continue;
+        float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+        if (weight <= 0.0) continue;
+        if (imageLoad(instancePreviousImage, tap).x != instance) continue;
+        vec4 previousSurface = imageLoad(surfacePreviousImage, tap);
+        if (abs(previousSurface.w - expectedDistance) >
+            RELATIVE_DEPTH_TOLERANCE * expectedDistance + 1e-3)
+          continue;
+        if (dot(previousSurface.xyz, surface.xyz) < NORMAL_COSINE_TOLERANCE) continue;
+        vec3 tapHistory = imageLoad(historyImage, tap).rgb;
+        vec3 tapMoments = imageLoad(momentsImage, tap).xyz;
+        if (!isFinite(tapHistory) || !isFinite(tapMoments)) continue;  // never let NaN in
+        historySum += weight * tapHistory;
+        momentsSum += weight * tapMoments;
+        weightSum += weight;
+      }
+    }
+    if (weightSum > 1e-3) {
+      history = historySum / weightSum;
+      moments = momentsSum.xy / weightSum;
+      historyLength = momentsSum.z / weightSum;
+    }
+  }
+  historyLength = min(historyLength + 1.0, reference ? 1.0e9 : MAX_HISTORY_LENGTH);
+  if (!reference && historyLength > 1.0) {
+    history = clamp(history, mean - NEIGHBOURHOOD_SIGMAS * sigma,
+                    mean + NEIGHBOURHOOD_SIGMAS * sigma);
+  }
+  // history + a (current - history): exact when they agree, so fully lit stays exactly 1.
+  float alpha = 1.0 / historyLength;
+  vec3 integrated = clamp(history + alpha * (current - history), 0.0, 1.0);
+  float currentLuminance = luminance(current);
+  moments += alpha * (vec2(currentLuminance, currentLuminance * currentLuminance) - moments);
+  float variance = max(moments.y - moments.x * moments.x, 0.0);
+  if (historyLength < 4.0) variance = max(variance, luminance(sigma) * luminance(sigma));
+  imageStore(filterAImage, pixel, vec4(integrated, variance));
+  imageStore(momentsNextImage, pixel, vec4(moments, historyLength, 0.0));
+  imageStore(historyNextImage, pixel, vec4(integrated, 0.0));
+}

@@ -1,0 +1,268 @@
+// Soft shadows: sampled area-light visibility and its denoiser.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "game/primitives.hpp"
+#include "scene_builder.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace {
+
+using render::DenoiserImage;
+using test::at;
+using test::SceneBuilder;
+
+constexpr uint32_t kSize = 48;
+
+// A white floor seen from above, a slab 0.5 m up, and a light above it.
+render::SceneDesc slabScene(const render::LightDesc& light, glm::vec3 slabAt = {0, 0.5f, 0}) {
+  SceneBuilder builder;
+  render::MaterialDesc white;
+  white.baseColor = glm::vec3(1.0f);
+  const uint32_t paint = builder.material(white);
+  builder.instance(builder.mesh(game::primitives::plane(20, 20)), paint, glm::mat4(1.0f));
+  builder.instance(builder.mesh(game::primitives::box({0.6f, 0.05f, 0.6f})), paint, at(slabAt));
+  builder.light(light);
+  return builder.scene;
+}
+
+render::LightDesc sphereLight(float radius) {
+  render::LightDesc light;
+  light.type = render::LightType::Sphere;
+  light.position = glm::vec3(0.3f, 2.0f, 0.0f);
+  light.radius = radius;
+  light.intensity = 10.0f;
+  return light;
+}
+
+render::CameraDesc topCamera() {
+  render::CameraDesc camera;
+  camera.position = glm::vec3(0, 1.6f, 0);
+  camera.pitchDegrees = -90.0f;
+  camera.verticalFovDegrees = 70.0f;
+  return camera;
+}
+
+std::vector<float> redChannel(const std::vector<glm::vec4>& texels) {
+  std::vector<float> values;
+  for (const glm::vec4& texel : texels) values.push_back(texel.r);
+  return values;
+}
+
+double rmse(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+  return std::sqrt(sum / double(a.size()));
+}
+
+class SoftShadowTest : public test::VulkanTest {
+ protected:
+  static std::unique_ptr<render::Renderer> makeRenderer(const render::SceneDesc& scene,
+                                                        bool allFeatures = false) {
+    render::RendererOptions options;
+    options.width = kSize;
+    options.height = kSize;
+    options.allFeatures = allFeatures;
+    return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
+  }
+
+  static render::FrameDesc frameAt(uint32_t index, bool reference = false) {
+    render::FrameDesc frame;
+    frame.camera = topCamera();
+    frame.tonemap = render::Tonemap::Identity;
+    frame.frameIndex = index;
+    frame.referenceAccumulation = reference;
+    return frame;
+  }
+
+  // Raw visibility averaged over `samples` frames starting at `firstFrame` (no filtering).
+  static std::vector<float> accumulate(const render::SceneDesc& scene, uint32_t samples,
+                                       uint32_t firstFrame) {
+    auto renderer = makeRenderer(scene);
+    for (uint32_t i = 0; i < samples; ++i)
+      renderer->renderFrame(frameAt(firstFrame + i, true), false);
+    return redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+  }
+};
+
+TEST_F(SoftShadowTest, zero_size_light_gives_exact_hard_shadow_through_the_soft_path) {
+  render::LightDesc sun;
+  sun.type = render::LightType::Directional;
+  sun.direction = glm::vec3(1, -1, 0);  // the slab's shadow lands at x in [0.2, 0.8]
+  sun.intensity = 1.0f;
+  auto renderer = makeRenderer(slabScene(sun), /*allFeatures=*/true);
+  ASSERT_TRUE(renderer->softShadows());
+  for (uint32_t frame = 0; frame < 4; ++frame) renderer->renderFrame(frameAt(frame));
+  const auto raw = redChannel(renderer->readDenoiser(DenoiserImage::RawVisibility));
+  const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+  size_t lit = 0, shadowed = 0;
+  for (size_t i = 0; i < raw.size(); ++i) {
+    ASSERT_TRUE(raw[i] == 0.0f || raw[i] == 1.0f) << i << ": " << raw[i];
+    lit += raw[i] == 1.0f;
+    shadowed += raw[i] == 0.0f;
+  }
+  EXPECT_GT(lit, 0u);
+  EXPECT_GT(shadowed, 0u);
+  // Away from the shadow's edge the denoiser keeps exactly 1 and exactly 0: the floor at
+  // x = 0.65 (beside the slab as seen from above) is in full shadow, a corner is open floor.
+  const double ndcX = 0.65 / 1.6 / std::tan(glm::radians(35.0));
+  const uint32_t shadowColumn = uint32_t((ndcX + 1.0) * 0.5 * kSize);
+  EXPECT_EQ(denoised[(kSize / 2) * kSize + shadowColumn], 0.0f);
+  EXPECT_EQ(denoised[0], 1.0f);
+}
+
+TEST_F(SoftShadowTest, denoised_output_stays_in_range_and_is_deterministic) {
+  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  std::vector<uint8_t> first;
+  for (int run = 0; run < 2; ++run) {
+    auto renderer = makeRenderer(scene);
+    for (uint32_t frame = 0; frame < 6; ++frame) renderer->renderFrame(frameAt(frame));
+    for (const glm::vec4& texel : renderer->readDenoiser(DenoiserImage::Denoised)) {
+      ASSERT_TRUE(std::isfinite(texel.r) && texel.r >= 0.0f && texel.r <= 1.0f) << texel.r;
+    }
+    if (run == 0)
+      first = renderer->pixels();
+    else
+      EXPECT_EQ(first, renderer->pixels());
+  }
+}
+
+TEST_F(SoftShadowTest, injected_nan_history_stays_contained) {
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f)));
+  renderer->renderFrame(frameAt(0));
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  renderer->fillDenoiserHistory(glm::vec4(nan), glm::vec4(nan, nan, 5.0f, 0.0f));
+  renderer->renderFrame(frameAt(1));
+  for (const glm::vec4& texel : renderer->readDenoiser(DenoiserImage::Denoised))
+    ASSERT_TRUE(std::isfinite(texel.r) && texel.r >= 0.0f && texel.r <= 1.0f);
+  for (const glm::vec4& texel : renderer->readDenoiser(DenoiserImage::Moments))
+    ASSERT_TRUE(std::isfinite(texel.x) && std::isfinite(texel.z));
+  for (size_t i = 0; i < renderer->pixels().size(); i += 4)
+    ASSERT_EQ(renderer->pixels()[i + 3], 255);
+}
+
+TEST_F(SoftShadowTest, long_history_of_100000_frames_still_averages_exactly) {
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f)));
+  renderer->renderFrame(frameAt(0, true));
+  // As if 100 000 frames had averaged 0.5: one more frame moves it by 1/100001 of the gap.
+  renderer->fillDenoiserHistory(glm::vec4(0.5f), glm::vec4(0.5f, 0.25f, 100000.0f, 0.0f));
+  renderer->renderFrame(frameAt(1, true));
+  const auto raw = redChannel(renderer->readDenoiser(DenoiserImage::RawVisibility));
+  const auto average = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+  const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
+  for (size_t i = 0; i < raw.size(); ++i) {
+    if (moments[i].z == 1.0f) continue;  // sky has no history
+    ASSERT_EQ(moments[i].z, 100001.0f);
+    const double expected = 0.5 + (double(raw[i]) - 0.5) / 100001.0;
+    ASSERT_NEAR(average[i], expected, 1e-3) << i;  // stored as half floats
+  }
+}
+
+TEST_F(SoftShadowTest, disoccluded_pixels_restart_their_history) {
+  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  auto renderer = makeRenderer(scene);
+  for (uint32_t frame = 0; frame < 10; ++frame) renderer->renderFrame(frameAt(frame));
+  const uint32_t centre = (kSize / 2) * kSize + kSize / 2;
+  EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[centre].z, 10.0f);
+  // The slab leaves: the floor under it is seen for the first time.
+  std::vector<glm::mat4> transforms = {glm::mat4(1.0f), at({50, 0.5f, 0})};
+  renderer->setInstanceTransforms(transforms);
+  renderer->renderFrame(frameAt(10));
+  const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
+  EXPECT_EQ(moments[centre].z, 1.0f);      // new surface: history reset
+  EXPECT_NEAR(moments[0].z, 11.0f, 1e-3);  // the floor that was visible keeps its history
+}
+
+TEST_F(SoftShadowTest, moving_occluder_leaves_a_trail_of_at_most_2_pixels_after_16_frames) {
+  // The slab slides 10 cm a frame (about 2 px of shadow) for 16 frames.
+  const auto slabAt = [](uint32_t frame) {
+    return glm::vec3(-0.8f + 0.1f * float(frame), 0.5f, 0);
+  };
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f), slabAt(0)));
+  const uint32_t frames = 16;
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    const std::vector<glm::mat4> transforms = {glm::mat4(1.0f), at(slabAt(frame))};
+    renderer->setInstanceTransforms(transforms);
+    renderer->renderFrame(frameAt(frame));
+  }
+  const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+  const auto reference = accumulate(slabScene(sphereLight(0.4f), slabAt(frames - 1)), 256, 50000);
+  // Trail: pixels that are fully lit now but still dark, measured along the motion (rows) from
+  // the nearest pixel that is really in (pen)umbra.
+  int longestTrail = 0;
+  for (uint32_t y = 0; y < kSize; ++y) {
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const size_t i = size_t(y) * kSize + x;
+      if (reference[i] < 0.95f || denoised[i] > 0.8f) continue;
+      int distance = int(kSize);
+      for (uint32_t other = 0; other < kSize; ++other) {
+        if (reference[size_t(y) * kSize + other] < 0.95f)
+          distance = std::min(distance, std::abs(int(other) - int(x)));
+      }
+      longestTrail = std::max(longestTrail, distance);
+    }
+  }
+  std::printf("longest trail: %d px\n", longestTrail);
+  EXPECT_LE(longestTrail, 2);
+}
+
+TEST_F(SoftShadowTest, denoised_flicker_over_64_static_frames_is_under_a_fifth_of_the_raw) {
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f)));
+  std::vector<double> rawSum(kSize * kSize), rawSquares(kSize * kSize);
+  std::vector<double> outSum(kSize * kSize), outSquares(kSize * kSize);
+  const uint32_t frames = 64;
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    renderer->renderFrame(frameAt(frame), false);
+    const auto raw = redChannel(renderer->readDenoiser(DenoiserImage::RawVisibility));
+    const auto out = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+    for (size_t i = 0; i < raw.size(); ++i) {
+      rawSum[i] += raw[i], rawSquares[i] += double(raw[i]) * raw[i];
+      outSum[i] += out[i], outSquares[i] += double(out[i]) * out[i];
+    }
+  }
+  double rawDeviation = 0.0, outDeviation = 0.0;
+  for (size_t i = 0; i < rawSum.size(); ++i) {
+    auto deviation = [&](double sum, double squares) {
+      const double mean = sum / frames;
+      return std::sqrt(std::max(squares / frames - mean * mean, 0.0));
+    };
+    rawDeviation += deviation(rawSum[i], rawSquares[i]);
+    outDeviation += deviation(outSum[i], outSquares[i]);
+  }
+  std::printf("mean per-pixel deviation: raw %.4f, denoised %.4f\n", rawDeviation / rawSum.size(),
+              outDeviation / rawSum.size());
+  EXPECT_LE(outDeviation, 0.2 * rawDeviation);
+}
+
+TEST_F(SoftShadowTest, first_frame_denoised_error_is_at_most_half_the_raw_error) {
+  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const auto reference = accumulate(scene, 512, 100000);
+  auto renderer = makeRenderer(scene);
+  renderer->renderFrame(frameAt(0));
+  const double raw =
+      rmse(redChannel(renderer->readDenoiser(DenoiserImage::RawVisibility)), reference);
+  const double denoised =
+      rmse(redChannel(renderer->readDenoiser(DenoiserImage::Denoised)), reference);
+  std::printf("first frame RMSE: raw %.4f, denoised %.4f\n", raw, denoised);
+  EXPECT_LE(denoised, 0.5 * raw);
+}
+
+TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
+  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  // The reference uses a distant stretch of the sequence, independent of the samples tested.
+  const auto reference = accumulate(scene, 1024, 1u << 20);
+  std::vector<double> logN, logError;
+  for (uint32_t samples : {4u, 16u, 64u}) {
+    const double error = rmse(accumulate(scene, samples, 0), reference);
+    std::printf("%u spp: RMSE %.5f\n", samples, error);
+    logN.push_back(std::log(double(samples)));
+    logError.push_back(std::log(error));
+  }
+  const double slope = (logError.back() - logError.front()) / (logN.back() - logN.front());
+  std::printf("log-log slope %.3f\n", slope);
+  EXPECT_LE(slope, -0.45);
+}
+
+}  // namespace
