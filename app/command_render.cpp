@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -20,6 +21,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A one-line progress bar on stderr, redrawn in place.
+void printProgress(uint32_t done, uint32_t total) {
+  constexpr int kWidth = 40;
+  const int filled = int(uint64_t(done) * kWidth / total);
+  std::fprintf(stderr, "\r[%s%s] %u/%u samples", std::string(size_t(filled), '#').c_str(),
+               std::string(size_t(kWidth - filled), '-').c_str(), done, total);
+  if (done == total) std::fprintf(stderr, "\n");
+  std::fflush(stderr);
+}
+
 struct RenderResult {
   render::FrameStats last;
   double milliseconds = 0.0;  // the first frame's, or the median of the rest
@@ -36,9 +47,13 @@ RenderResult renderToPng(const render::Context& context, render::ShaderCompiler&
   render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
   std::vector<double> times;
   RenderResult result;
+  const bool showProgress = options.reference && frames > 1;
   for (uint32_t i = 0; i < frames; ++i) {
-    result.last = renderer.renderFrame(frameFor(level, options, i), i + 1 == frames);
+    render::FrameDesc frame = frameFor(level, options, i);
+    frame.referenceAccumulation = options.reference;
+    result.last = renderer.renderFrame(frame, i + 1 == frames);
     times.push_back(result.last.milliseconds);
+    if (showProgress) printProgress(i + 1, frames);
   }
   render::writePng(out, {renderer.width(), renderer.height(), renderer.pixels()});
   result.milliseconds =
@@ -57,7 +72,7 @@ int renderLevel(const fs::path& levelFile, const Options& options, const fs::pat
   printWarnings(level);
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
-  const uint32_t frames = options.frames.value_or(1);
+  const uint32_t frames = options.reference ? options.samplesPerPixel : options.frames.value_or(1);
   const RenderResult result = renderToPng(context, compiler, level, options, frames, out);
   std::printf("%s: %ux%u on %s (%s)\n", level.name.c_str(), options.width, options.height,
               context.deviceInfo().name.c_str(), context.deviceInfo().driver.c_str());
@@ -67,6 +82,11 @@ int renderLevel(const fs::path& levelFile, const Options& options, const fs::pat
               double(result.last.rays()) / (result.milliseconds * 1000.0),
               static_cast<unsigned long long>(result.last.surfaceRays),
               static_cast<unsigned long long>(result.last.secondaryRays));
+  const render::PassTimes& gpu = result.last.gpu;
+  std::printf(
+      "GPU time of the last frame: trace %.2f ms, denoise %.2f ms, tonemap %.2f ms, "
+      "readback %.2f ms\n",
+      gpu.traceMs, gpu.denoiseMs, gpu.tonemapMs, gpu.readbackMs);
   std::printf("wrote %s\n", fs::absolute(out).c_str());
   return validationExitCode(context);
 }

@@ -8,6 +8,7 @@ int commandPlay(const Options& options);
 int commandRender(const Options& options);
 int commandPreview(const Options& options);
 int commandBench(const Options& options);
+int commandBenchQuality(const Options& options);
 int commandValidate(const Options& options);
 int commandInfo(const Options& options);
 int commandDevices();

@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
     if (options.command == "devices") return app::commandDevices();
     if (options.command == "preview") return app::commandPreview(options);
     if (options.command == "info") return app::commandInfo(options);
+    if (options.command == "bench-quality") return app::commandBenchQuality(options);
     if (options.command == "help" || options.command == "--help" || options.command == "-h") {
       std::fputs(app::kUsage, stdout);
       return 0;

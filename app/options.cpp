@@ -13,6 +13,8 @@ commands:
   preview <level.json>         render a thumbnail from the spawn camera (--watch: re-render
                                whenever the level or a file it uses is saved)
   bench [level.json...]        time every shipped level (or the given ones)
+  bench-quality <level.json>   soft-shadow error (RMSE, SSIM) against GPU time: a table, a CSV
+                               and a log-log plot in --out DIR (default out/)
   validate <level.json...>     check levels and report the first error in each
   info <level.json>            triangles, instances, lights and the features a level uses
   devices                      list Vulkan devices and whether they can run Sightline
@@ -26,6 +28,8 @@ options:
   --row-groups N      interleave launch rows in N groups (default 8, 1 = off)
   --device SEL        device index or part of its name (see `sightline devices`)
   --validate          enable the Vulkan validation layer (with synchronization checks)
+  --reference         render: ground truth, averaging --spp raw soft-shadow samples
+  --spp N             samples per pixel for --reference (default 256)
   --watch             preview: keep running and re-render on every save
   --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
 )";
@@ -91,6 +95,10 @@ Options parseOptions(int argc, char** argv) {
       options.device = value();
     } else if (argument == "--validate") {
       options.validate = true;
+    } else if (argument == "--reference") {
+      options.reference = true;
+    } else if (argument == "--spp") {
+      options.samplesPerPixel = parseCount("--spp", value(), 1, 1000000);
     } else if (argument == "--watch") {
       options.watch = true;
     } else if (argument == "--watch-limit") {

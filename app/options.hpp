@@ -31,6 +31,8 @@ struct Options {
   std::string device;
   bool validate = false;
   bool watch = false;
+  bool reference = false;  // render: accumulate raw soft-shadow samples, no denoiser
+  uint32_t samplesPerPixel = 256;
   uint32_t watchLimit = 0;  // 0: no limit
 };
 

@@ -299,6 +299,8 @@ Context::Context(const ContextOptions& options) : options_(options) {
       }
     }
     if (!foundFamily) throw RenderError(deviceInfo_.name + " has no graphics+compute queue");
+    timestampsSupported_ = families[queueFamily_].timestampValidBits > 0 &&
+                           properties_.limits.timestampComputeAndGraphics;
 
     // Feature chain: Vulkan 1.2 (device addresses) -> acceleration structures -> pipelines.
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR pipelineFeatures{

@@ -76,6 +76,7 @@ class Context {
   const VkPhysicalDeviceProperties& properties() const { return properties_; }
   bool isCpuDevice() const { return deviceInfo_.type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+  bool timestampsSupported() const { return timestampsSupported_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -117,6 +118,7 @@ class Context {
   uint32_t queueFamily_ = 0;
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   DeviceInfo deviceInfo_;
+  bool timestampsSupported_ = false;
   RayTracingFunctions rt_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memoryProperties_{};

@@ -29,6 +29,9 @@ constexpr VkBufferUsageFlags kGeometryUsage =
     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
     VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT;
 
+// Start, after tracing, after denoising, after the tonemap, after the readback.
+constexpr uint32_t kTimestampCount = 5;
+
 template <typename T>
 Buffer makeStorage(const Context& context, const std::vector<T>& items, VkBufferUsageFlags usage,
                    const char* name) {
@@ -205,6 +208,13 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   allocateInfo.commandBufferCount = 1;
   vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
           "vkAllocateCommandBuffers");
+  if (context.timestampsSupported()) {
+    VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
+    queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
+    queryInfo.queryCount = kTimestampCount;
+    vkCheck(vkCreateQueryPool(context.device(), &queryInfo, nullptr, &timestamps_),
+            "vkCreateQueryPool");
+  }
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &frameDone_), "vkCreateFence");
 }
@@ -213,6 +223,7 @@ Renderer::~Renderer() {
   VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   if (frameDone_) vkDestroyFence(device, frameDone_, nullptr);
+  if (timestamps_) vkDestroyQueryPool(device, timestamps_, nullptr);
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   if (tonemapPipeline_) vkDestroyPipeline(device, tonemapPipeline_, nullptr);
   if (sampler_) vkDestroySampler(device, sampler_, nullptr);
@@ -441,6 +452,12 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
 }
 
 void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
+  auto stamp = [&](uint32_t query) {
+    if (timestamps_)
+      vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, timestamps_, query);
+  };
+  if (timestamps_) vkCmdResetQueryPool(commands, timestamps_, 0, kTimestampCount);
+  stamp(0);
   if (!pendingTransforms_.empty()) {
     // The previous trace read the TLAS; the update rewrites it.
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0,
@@ -467,6 +484,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
+  stamp(1);
   if (denoiser_) {
     denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -475,7 +493,9 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
                           &descriptorSets_[parity_], 0, nullptr);
+  stamp(2);
   vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
+  stamp(3);
   if (readback) {
     imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_GENERAL,
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
@@ -493,6 +513,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
                        VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   }
+  stamp(4);
 }
 
 uint32_t Renderer::denoiserIterations(const FrameDesc& frame) const {
@@ -538,6 +559,16 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
   stats.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
   gpu::FrameCounters counters{};
   counters_.read(&counters, sizeof counters);
+  if (timestamps_) {
+    uint64_t ticks[kTimestampCount] = {};
+    vkCheck(vkGetQueryPoolResults(context_.device(), timestamps_, 0, kTimestampCount, sizeof ticks,
+                                  ticks, sizeof(uint64_t),
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+            "vkGetQueryPoolResults");
+    const double msPerTick = context_.properties().limits.timestampPeriod * 1e-6;
+    auto between = [&](int from, int to) { return double(ticks[to] - ticks[from]) * msPerTick; };
+    stats.gpu = {between(0, 1), between(1, 2), between(2, 3), between(3, 4)};
+  }
   stats.surfaceRays = counters.surfaceRays;
   stats.secondaryRays = counters.secondaryRays;
   if (readback) {

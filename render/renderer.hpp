@@ -36,7 +36,17 @@ struct RendererOptions {
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
 };
 
+// GPU time of each pass from timestamp queries (0 where the device has no timestamps).
+struct PassTimes {
+  double traceMs = 0.0;    // TLAS update and ray tracing
+  double denoiseMs = 0.0;  // temporal and a-trous passes (0 without soft shadows)
+  double tonemapMs = 0.0;  // composite, tonemap, sRGB encode
+  double readbackMs = 0.0;
+  double totalMs() const { return traceMs + denoiseMs + tonemapMs + readbackMs; }
+};
+
 struct FrameStats {
+  PassTimes gpu;
   double milliseconds = 0.0;   // host time from submit to completion
   uint64_t surfaceRays = 0;    // camera rays and mirror bounces, counted by the ray-gen shader
   uint64_t secondaryRays = 0;  // shadow and glass rays
@@ -122,6 +132,7 @@ class Renderer {
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFence frameDone_ = VK_NULL_HANDLE;
+  VkQueryPool timestamps_ = VK_NULL_HANDLE;  // null when the queue has no timestamps
   std::vector<uint8_t> pixels_;
 };
 
