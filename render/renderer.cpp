@@ -155,10 +155,17 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   vkCheck(vkCreateSampler(context.device(), &samplerInfo, nullptr, &sampler_), "vkCreateSampler");
   frameUniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                           MemoryUse::Upload, "frame uniforms");
-  counters_ = Buffer(context, sizeof(gpu::FrameCounters), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                     MemoryUse::Readback, "frame counters");
+  // Shaders write counters and paths in device memory; the host reads copies.
+  constexpr VkDeviceSize kCounterBytes = sizeof(gpu::FrameCounters) * COUNTER_SLOTS;
+  counters_ = Buffer(context, kCounterBytes,
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                         VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                     MemoryUse::DeviceOnly, "frame counters");
+  countersReadback_ = Buffer(context, kCounterBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             MemoryUse::Readback, "frame counters readback");
   paths_ = Buffer(context, VkDeviceSize(options.width) * options.height * sizeof(gpu::PixelPath),
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Readback, "pixel paths");
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  MemoryUse::DeviceOnly, "pixel paths");
   readback_ = Buffer(context, VkDeviceSize(options.width) * options.height * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
 
@@ -400,8 +407,19 @@ void Renderer::writeInstanceMotion() {
 }
 
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
+  Buffer staging(context_, paths_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                 "pixel paths readback");
+  context_.submitAndWait([&](VkCommandBuffer commands) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                  VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                  VK_ACCESS_TRANSFER_READ_BIT);
+    const VkBufferCopy copy{0, 0, paths_.size()};
+    vkCmdCopyBuffer(commands, paths_.handle(), staging.handle(), 1, &copy);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  });
   std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
-  paths_.read(result.data(), result.size() * sizeof(gpu::PixelPath));
+  staging.read(result.data(), result.size() * sizeof(gpu::PixelPath));
   return result;
 }
 
@@ -458,6 +476,12 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   };
   if (timestamps_) vkCmdResetQueryPool(commands, timestamps_, 0, kTimestampCount);
   stamp(0);
+  // The previous frame's copy read the counters this fill clears.
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT, 0);
+  vkCmdFillBuffer(commands, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   if (!pendingTransforms_.empty()) {
     // The previous trace read the TLAS; the update rewrites it.
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0,
@@ -513,6 +537,13 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
                        VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   }
+  // The counters, for the host: a few hundred bytes.
+  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  const VkBufferCopy counterCopy{0, 0, countersReadback_.size()};
+  vkCmdCopyBuffer(commands, counters_.handle(), countersReadback_.handle(), 1, &counterCopy);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
   stamp(4);
 }
 
@@ -535,8 +566,6 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
   lastIterations_ = denoiserIterations(frame);
   writeInstanceMotion();
   writeFrameUniforms(frame);
-  const gpu::FrameCounters zero{};
-  counters_.write(&zero, sizeof zero);
 
   vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -557,8 +586,13 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
 
   FrameStats stats;
   stats.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
+  std::array<gpu::FrameCounters, COUNTER_SLOTS> slots{};
+  countersReadback_.read(slots.data(), sizeof slots);
   gpu::FrameCounters counters{};
-  counters_.read(&counters, sizeof counters);
+  for (const gpu::FrameCounters& slot : slots) {
+    counters.surfaceRays += slot.surfaceRays;
+    counters.secondaryRays += slot.secondaryRays;
+  }
   if (timestamps_) {
     uint64_t ticks[kTimestampCount] = {};
     vkCheck(vkGetQueryPoolResults(context_.device(), timestamps_, 0, kTimestampCount, sizeof ticks,

@@ -106,6 +106,7 @@ class Renderer {
   Buffer lights_;
   Buffer frameUniforms_;
   Buffer counters_;
+  Buffer countersReadback_;
   Buffer paths_;
   PipelineDescription pipelineDescription_;
   Buffer readback_;

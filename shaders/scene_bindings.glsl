@@ -11,6 +11,8 @@ layout(set = 0, binding = BINDING_VERTICES, std430) readonly buffer VertexBlock 
   float vertexFloats[];
 };
 layout(set = 0, binding = BINDING_INDICES, std430) readonly buffer IndexBlock { uint indices[]; };
-layout(set = 0, binding = BINDING_COUNTERS, std430) buffer CounterBlock { FrameCounters counters; };
+layout(set = 0, binding = BINDING_COUNTERS, std430) buffer CounterBlock {
+  FrameCounters counterSlots[COUNTER_SLOTS];
+};
 layout(set = 0, binding = BINDING_TEXTURES) uniform sampler2D textures[];
 layout(set = 0, binding = BINDING_PATHS, std430) writeonly buffer PathBlock { PixelPath paths[]; };

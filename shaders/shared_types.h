@@ -109,7 +109,10 @@ struct GpuLight {
   vec4 extent;            // xy: rectangle size, z: angular diameter in radians
 };
 
-// Counters the ray-gen shader adds into; integers so sums do not depend on order.
+// Counters the ray-gen shader adds into; integers so sums do not depend on order. Pixels
+// spread their atomics over COUNTER_SLOTS copies (summed on the host) so a GPU's threads do
+// not all queue on one address.
+#define COUNTER_SLOTS 64
 struct FrameCounters {
   uint surfaceRays;    // camera rays and their mirror bounces
   uint secondaryRays;  // shadow rays and glass rays
