@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "render/barriers.hpp"
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
@@ -79,13 +80,11 @@ VkAccelerationStructureBuildGeometryInfoKHR topLevelBuildInfo(
 }
 
 void structureBuildBarrier(VkCommandBuffer commands) {
-  VkMemoryBarrier barrier{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-  barrier.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  barrier.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
-                          VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-  vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
-                       VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &barrier, 0,
-                       nullptr, 0, nullptr);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
+                VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
+                VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                    VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR);
 }
 
 }  // namespace

@@ -1,13 +1,14 @@
 #include "render/storage_image.hpp"
 
+#include "render/barriers.hpp"
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
 namespace render {
 
-StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t height, VkFormat format,
-                           VkImageUsageFlags extraUsage, const std::string& name)
-    : device_(context.device()), width_(width), height_(height) {
+VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
+                      VkImageUsageFlags usage, const std::string& name, VkDeviceMemory* memory) {
+  VkDevice device = context.device();
   VkImageCreateInfo imageInfo{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   imageInfo.imageType = VK_IMAGE_TYPE_2D;
   imageInfo.format = format;
@@ -16,41 +17,49 @@ StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t heig
   imageInfo.arrayLayers = 1;
   imageInfo.samples = VK_SAMPLE_COUNT_1_BIT;
   imageInfo.tiling = VK_IMAGE_TILING_OPTIMAL;
-  imageInfo.usage = VK_IMAGE_USAGE_STORAGE_BIT | extraUsage;
+  imageInfo.usage = usage;
   imageInfo.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  vkCheck(vkCreateImage(device_, &imageInfo, nullptr, &image_), "vkCreateImage");
-  context.setName(image_, VK_OBJECT_TYPE_IMAGE, name);
-
+  VkImage image = VK_NULL_HANDLE;
+  vkCheck(vkCreateImage(device, &imageInfo, nullptr, &image), "vkCreateImage");
+  context.setName(image, VK_OBJECT_TYPE_IMAGE, name);
   VkMemoryRequirements requirements;
-  vkGetImageMemoryRequirements(device_, image_, &requirements);
+  vkGetImageMemoryRequirements(device, image, &requirements);
   VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
   allocateInfo.allocationSize = requirements.size;
   allocateInfo.memoryTypeIndex =
       context.findMemoryType(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  vkCheck(vkAllocateMemory(device_, &allocateInfo, nullptr, &memory_), "vkAllocateMemory");
-  vkCheck(vkBindImageMemory(device_, image_, memory_, 0), "vkBindImageMemory");
+  VkResult result = vkAllocateMemory(device, &allocateInfo, nullptr, memory);
+  if (result != VK_SUCCESS) {
+    vkDestroyImage(device, image, nullptr);
+    vkCheck(result, "vkAllocateMemory");
+  }
+  vkCheck(vkBindImageMemory(device, image, *memory, 0), "vkBindImageMemory");
+  return image;
+}
 
+VkImageView createImageView(const Context& context, VkImage image, VkFormat format,
+                            const std::string& name) {
   VkImageViewCreateInfo viewInfo{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-  viewInfo.image = image_;
+  viewInfo.image = image;
   viewInfo.viewType = VK_IMAGE_VIEW_TYPE_2D;
   viewInfo.format = format;
   viewInfo.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCheck(vkCreateImageView(device_, &viewInfo, nullptr, &view_), "vkCreateImageView");
-  context.setName(view_, VK_OBJECT_TYPE_IMAGE_VIEW, name + " view");
+  VkImageView view = VK_NULL_HANDLE;
+  vkCheck(vkCreateImageView(context.device(), &viewInfo, nullptr, &view), "vkCreateImageView");
+  context.setName(view, VK_OBJECT_TYPE_IMAGE_VIEW, name + " view");
+  return view;
+}
 
+StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t height, VkFormat format,
+                           VkImageUsageFlags extraUsage, const std::string& name)
+    : device_(context.device()), width_(width), height_(height) {
+  image_ = createImage2D(context, width, height, format, VK_IMAGE_USAGE_STORAGE_BIT | extraUsage,
+                         name, &memory_);
+  view_ = createImageView(context, image_, format, name);
   context.submitAndWait([&](VkCommandBuffer commands) {
-    VkImageMemoryBarrier barrier{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER};
-    barrier.srcAccessMask = 0;
-    barrier.dstAccessMask = VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT;
-    barrier.oldLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-    barrier.newLayout = VK_IMAGE_LAYOUT_GENERAL;
-    barrier.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    barrier.image = image_;
-    barrier.subresourceRange = viewInfo.subresourceRange;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                         VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 0, nullptr, 0, nullptr, 1,
-                         &barrier);
+    imageLayoutBarrier(commands, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT);
   });
 }
 

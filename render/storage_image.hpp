@@ -30,4 +30,10 @@ class StorageImage {
   uint32_t height_;
 };
 
+// A device-local 2D image (one mip, one layer) and its memory; throws RenderError.
+VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
+                      VkImageUsageFlags usage, const std::string& name, VkDeviceMemory* memory);
+VkImageView createImageView(const Context& context, VkImage image, VkFormat format,
+                            const std::string& name);
+
 }  // namespace render
