@@ -434,7 +434,14 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
   // Reprojection needs the previous frame's camera; without one the history starts afresh.
-  const bool reset = frame.resetHistory || !previousUniforms_;
+  // A jump of the camera (a cut or teleport) is treated like an explicit reset: reprojecting
+  // across it would only smear the old view.
+  constexpr float kCutDistance = 1.0f, kCutCosine = 0.7f;
+  const bool cut = previousUniforms_ &&
+                   (glm::distance(glm::vec3(previousUniforms_->cameraPosition), camera.position) >
+                        kCutDistance ||
+                    glm::dot(glm::vec3(previousUniforms_->cameraForward), forward) < kCutCosine);
+  const bool reset = frame.resetHistory || !previousUniforms_ || cut;
   const gpu::FrameUniforms& previous = previousUniforms_ ? *previousUniforms_ : uniforms;
   uniforms.previousCameraPosition = previous.cameraPosition;
   uniforms.previousCameraRight = previous.cameraRight;

@@ -236,6 +236,23 @@ TEST_F(SoftShadowTest, denoised_flicker_over_64_static_frames_is_under_a_fifth_o
   EXPECT_LE(outDeviation, 0.2 * rawDeviation);
 }
 
+TEST_F(SoftShadowTest, camera_teleport_or_explicit_cut_resets_the_history) {
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f)));
+  for (uint32_t frame = 0; frame < 5; ++frame) renderer->renderFrame(frameAt(frame));
+  const uint32_t corner = 0;
+  EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 5.0f);
+  render::FrameDesc cut = frameAt(5);
+  cut.resetHistory = true;
+  renderer->renderFrame(cut);
+  EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 1.0f);
+  renderer->renderFrame(frameAt(6));
+  EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 2.0f);
+  render::FrameDesc teleport = frameAt(7);
+  teleport.camera.position += glm::vec3(3.0f, 0.0f, 0.0f);  // more than the 1 m cut distance
+  renderer->renderFrame(teleport);
+  EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 1.0f);
+}
+
 TEST_F(SoftShadowTest, first_frame_denoised_error_is_at_most_half_the_raw_error) {
   const render::SceneDesc scene = slabScene(sphereLight(0.4f));
   const auto reference = accumulate(scene, 512, 100000);
