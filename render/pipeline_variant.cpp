@@ -40,6 +40,10 @@ PipelineDescription describePipeline(const PipelineFeatures& features) {
       {"MAX_MIRROR_BOUNCES", std::to_string(features.mirrors ? features.maxMirrorBounces : 0)},
       {"SOFT_SHADOWS", features.softShadows ? "1" : "0"},
   };
+  // Only soft-shadow variants have more than one sample to choose; others keep one key.
+  if (features.softShadows && features.softShadowSamples > 1)
+    description.defines.push_back(
+        {"SOFT_SHADOW_SAMPLES", std::to_string(std::min(features.softShadowSamples, 16u))});
   return description;
 }
 

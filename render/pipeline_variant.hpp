@@ -15,7 +15,8 @@ struct PipelineFeatures {
   bool glass = false;    // some visible instance has a glass material
   bool mirrors = false;  // some visible instance has a mirror material
   uint32_t maxMirrorBounces = 0;
-  bool softShadows = false;  // some light has extent: sampled visibility + denoiser
+  bool softShadows = false;        // some light has extent: sampled visibility + denoiser
+  uint32_t softShadowSamples = 1;  // shadow rays per pixel and frame for the soft lights
   bool operator==(const PipelineFeatures&) const = default;
 };
 

@@ -178,8 +178,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   outputImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                                 VK_FORMAT_R8G8B8A8_UNORM,
                                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
-  const PipelineFeatures features =
+  PipelineFeatures features =
       options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
+  features.softShadowSamples = std::clamp(options.softShadowSamples, 1u, 16u);
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);

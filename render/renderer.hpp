@@ -34,6 +34,8 @@ struct RendererOptions {
   // Build the all-features pipeline instead of the scene's own variant (for measuring it).
   bool allFeatures = false;
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
+  // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
+  uint32_t softShadowSamples = 1;
 };
 
 // GPU time of each pass from timestamp queries (0 where the device has no timestamps).
