@@ -21,8 +21,11 @@ struct GltfMaterial {
   std::optional<render::TextureDesc> normalTexture;  // srgb = false
 };
 
+// Which part of the model to load; at most one of the two may be set. Neither: every node of
+// the default scene with its transforms (every mesh untransformed when there is no scene).
 struct GltfSelection {
-  std::string node;  // non-empty: that node (by name) and its children, with transforms
+  std::string node;  // non-empty: that node (by name) and its children, placed where the scene
+                     // puts them (its ancestors' transforms apply too)
   std::string mesh;  // non-empty: that mesh (by name), in its own coordinates
 };
 
@@ -33,8 +36,11 @@ struct GltfModel {
   std::vector<std::string> warnings;             // "<file>: dropped N degenerate triangles"
 };
 
-// Reads `file`; every file tinygltf opens must resolve inside `allowedRoot`.
-// Throws game::LevelError("<file>: <problem>").
+// Reads `file`; every file tinygltf opens must resolve inside `allowedRoot`. Meshes are
+// appended depth first in document order; the material is that of the first primitive
+// appended, and only the images it uses are decoded (through decodeTexture, so with its limits).
+// Throws game::LevelError("<file>: <problem>"); the problem names the mesh, primitive, material
+// or image at fault.
 GltfModel loadGltfModel(const std::filesystem::path& file, const std::filesystem::path& allowedRoot,
                         const GltfSelection& selection = {});
 

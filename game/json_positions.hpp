@@ -7,6 +7,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 
 namespace game {
 
@@ -35,14 +36,27 @@ class JsonPositions {
   };
   const std::optional<DuplicateKey>& firstDuplicateKey() const { return firstDuplicateKey_; }
 
+  // The pointer of the value that starts at `position`, if one does (used to name a number
+  // nlohmann could not represent, which it reports by offset only).
+  std::optional<std::string> pointerOfValueAt(SourcePosition position) const;
+
+  // `pointer` written the way messages show it: object members joined with '.', array elements
+  // as [index], e.g. "/goal/of/0/orb" -> "goal.of[0].orb"; "" (the root) stays "". Keys that are
+  // not plain names are quoted: entities["a b"].
+  std::string dottedPath(const std::string& pointer) const;
+
  private:
   std::unordered_map<std::string, SourcePosition> values_;
+  std::unordered_set<std::string> arrays_;  // pointers of the arrays, to tell indices from keys
   std::unordered_map<std::string, SourcePosition> keys_;
   std::optional<DuplicateKey> firstDuplicateKey_;
 };
 
 // Escapes one reference token for a JSON pointer ("~" -> "~0", "/" -> "~1").
 std::string escapeJsonPointerToken(std::string_view token);
+
+// Undoes escapeJsonPointerToken.
+std::string unescapeJsonPointerToken(std::string_view token);
 
 // Line and column of the byte at zero-based `offset` (clamped to the end of the text).
 SourcePosition positionOfOffset(std::string_view text, std::size_t offset);

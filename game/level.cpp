@@ -17,11 +17,14 @@ render::SceneDesc buildSceneDesc(const Level& level) {
   render::SceneDesc scene;
   scene.meshes = level.meshes;
   scene.materials = level.materials;
-  scene.lights = level.lights;
+  scene.textures = level.textures;
+  scene.lights = level.lights;  // with enabled, radius, size and angular diameter
   scene.environment = level.environment;
+  scene.maxMirrorBounces = level.maxMirrorBounces;
   scene.instances.reserve(level.entities.size());
   for (const Entity& entity : level.entities) {
-    scene.instances.push_back({entity.mesh, entity.material, entityTransform(entity)});
+    scene.instances.push_back(
+        {entity.mesh, entity.material, entityTransform(entity), entity.castsShadow});
   }
   return scene;
 }

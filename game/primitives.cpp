@@ -16,13 +16,15 @@ void addTriangle(render::MeshData& mesh, uint32_t a, uint32_t b, uint32_t c) {
 }
 
 // One flat quad; `right` x `up` must equal `normal` so the corners run counter-clockwise.
+// The whole texture covers it, upright and unmirrored when seen from the front: image rows run
+// top to bottom, so v grows against `up`.
 void addQuad(render::MeshData& mesh, const glm::vec3& center, const glm::vec3& right,
              const glm::vec3& up, const glm::vec3& normal) {
   const uint32_t first = nextIndex(mesh);
-  mesh.vertices.push_back({center - right - up, normal});
-  mesh.vertices.push_back({center + right - up, normal});
-  mesh.vertices.push_back({center + right + up, normal});
-  mesh.vertices.push_back({center - right + up, normal});
+  mesh.vertices.push_back({center - right - up, normal, {0.0f, 1.0f}});
+  mesh.vertices.push_back({center + right - up, normal, {1.0f, 1.0f}});
+  mesh.vertices.push_back({center + right + up, normal, {1.0f, 0.0f}});
+  mesh.vertices.push_back({center - right + up, normal, {0.0f, 0.0f}});
   addTriangle(mesh, first, first + 1, first + 2);
   addTriangle(mesh, first, first + 2, first + 3);
 }
@@ -54,14 +56,16 @@ render::MeshData sphere(float radius, uint32_t segments, uint32_t rings) {
   mesh.name = "sphere";
   const float pi = std::numbers::pi_v<float>;
   // Rows run from the north pole (ring 0) to the south pole; the seam column is duplicated so
-  // every row has segments + 1 vertices.
+  // every row has segments + 1 vertices and u can run from 0 to 1 without wrapping.
   for (uint32_t ring = 0; ring <= rings; ++ring) {
-    const float polar = pi * static_cast<float>(ring) / static_cast<float>(rings);
+    const float v = static_cast<float>(ring) / static_cast<float>(rings);
+    const float polar = pi * v;
     for (uint32_t segment = 0; segment <= segments; ++segment) {
-      const float azimuth = 2.0f * pi * static_cast<float>(segment) / static_cast<float>(segments);
+      const float u = static_cast<float>(segment) / static_cast<float>(segments);
+      const float azimuth = 2.0f * pi * u;
       const glm::vec3 normal =
           aroundY(azimuth) * std::sin(polar) + glm::vec3(0, std::cos(polar), 0);
-      mesh.vertices.push_back({normal * radius, normal});
+      mesh.vertices.push_back({normal * radius, normal, {u, v}});
     }
   }
   const uint32_t rowLength = segments + 1;
@@ -93,11 +97,12 @@ render::MeshData cylinder(float radius, float height, uint32_t segments) {
     return 2.0f * pi * static_cast<float>(segment) / static_cast<float>(segments);
   };
 
-  // Side: a bottom/top vertex pair per column, seam duplicated.
+  // Side: a bottom/top vertex pair per column, seam duplicated; u runs around, v down.
   for (uint32_t segment = 0; segment <= segments; ++segment) {
     const glm::vec3 normal = aroundY(angleOf(segment));
-    mesh.vertices.push_back({normal * radius - glm::vec3(0, halfHeight, 0), normal});
-    mesh.vertices.push_back({normal * radius + glm::vec3(0, halfHeight, 0), normal});
+    const float u = static_cast<float>(segment) / static_cast<float>(segments);
+    mesh.vertices.push_back({normal * radius - glm::vec3(0, halfHeight, 0), normal, {u, 1.0f}});
+    mesh.vertices.push_back({normal * radius + glm::vec3(0, halfHeight, 0), normal, {u, 0.0f}});
   }
   for (uint32_t segment = 0; segment < segments; ++segment) {
     const uint32_t bottom = 2 * segment, top = bottom + 1;
@@ -106,13 +111,17 @@ render::MeshData cylinder(float radius, float height, uint32_t segments) {
     addTriangle(mesh, bottom, nextTop, top);
   }
 
-  // Caps: a center vertex and their own ring, so their normals stay flat.
+  // Caps: a center vertex and their own ring, so their normals stay flat. The texture is laid
+  // flat over each cap as on a box face: u along +X, v along +Z on top and along -Z below, so
+  // neither cap shows it mirrored.
   for (const float side : {1.0f, -1.0f}) {
     const glm::vec3 normal{0, side, 0};
     const uint32_t center = nextIndex(mesh);
-    mesh.vertices.push_back({normal * halfHeight, normal});
+    mesh.vertices.push_back({normal * halfHeight, normal, {0.5f, 0.5f}});
     for (uint32_t segment = 0; segment < segments; ++segment) {
-      mesh.vertices.push_back({aroundY(angleOf(segment)) * radius + normal * halfHeight, normal});
+      const glm::vec3 rim = aroundY(angleOf(segment));
+      const glm::vec2 uv{0.5f + 0.5f * rim.x, 0.5f + 0.5f * side * rim.z};
+      mesh.vertices.push_back({rim * radius + normal * halfHeight, normal, uv});
     }
     for (uint32_t segment = 0; segment < segments; ++segment) {
       const uint32_t current = center + 1 + segment;

@@ -10,6 +10,7 @@ packages=(
   libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
+  clang libclang-rt-14-dev python3 python3-jsonschema
 )
 # Mesa >= 24.1 is the first lavapipe with ray tracing; bookworm has 22.3, backports 25.x.
 mesa_min_version="24.1"

@@ -51,8 +51,8 @@ grep -q 'level.json:5:' "$work/log" || { echo "FAIL: error lacks file:line"; cat
 sleep 0.05
 write_level '[0, 0, 1]'
 wait_for '^reloaded Watched'
-wait "$pid"
-status=$?
+status=0
+wait "$pid" || status=$?
 pid=""
 second=$(md5sum <"$work/preview.png")
 if [ "$status" -ne 0 ] || [ "$first" = "$second" ]; then

@@ -1,0 +1,562 @@
+// Tests for loadGltfModel: geometry, UVs, selection, degenerate triangles, materials and
+// textures, and the confinement of every file the model names.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <stb/stb_image_write.h>
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "game/gltf_mesh.hpp"
+#include "game/level_loader.hpp"
+#include "game/primitives.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const fs::path kAssets = fs::path(SIGHTLINE_SOURCE_DIR) / "assets";
+
+constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123;
+
+void writeFile(const fs::path& path, const std::string& contents) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << contents;
+}
+
+std::string readFile(const fs::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
+}
+
+std::string base64(const std::string& bytes) {
+  static const char* const alphabet =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string encoded;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    uint32_t group = static_cast<uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
+    if (i + 1 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 2]);
+    encoded += alphabet[(group >> 18) & 63];
+    encoded += alphabet[(group >> 12) & 63];
+    encoded += i + 1 < bytes.size() ? alphabet[(group >> 6) & 63] : '=';
+    encoded += i + 2 < bytes.size() ? alphabet[group & 63] : '=';
+  }
+  return encoded;
+}
+
+template <typename T>
+std::string packed(const std::vector<T>& values) {
+  std::string bytes(values.size() * sizeof(T), '\0');
+  std::memcpy(bytes.data(), values.data(), bytes.size());  // little-endian, as glTF
+  return bytes;
+}
+
+std::string packedVec3s(const std::vector<glm::vec3>& points) {
+  std::vector<float> floats;
+  for (const glm::vec3& p : points) floats.insert(floats.end(), {p.x, p.y, p.z});
+  return packed(floats);
+}
+
+// A 2x1 RGB PNG, red then green.
+std::string tinyPng() {
+  const std::array<uint8_t, 6> pixels = {255, 0, 0, 0, 255, 0};
+  std::string png;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int bytes) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<std::size_t>(bytes));
+      },
+      &png, 2, 1, 3, pixels.data(), 6);
+  EXPECT_FALSE(png.empty());
+  return png;
+}
+
+// Builds a glTF document with one binary buffer, one buffer view per accessor.
+struct GltfBuilder {
+  json document = {{"asset", {{"version", "2.0"}}},
+                   {"bufferViews", json::array()},
+                   {"accessors", json::array()}};
+  std::string buffer;
+
+  int addView(const std::string& bytes) {
+    buffer.resize((buffer.size() + 3) / 4 * 4, '\0');  // keep every view 4-byte aligned
+    document["bufferViews"].push_back(
+        {{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", bytes.size()}});
+    buffer += bytes;
+    return static_cast<int>(document["bufferViews"].size()) - 1;
+  }
+
+  int addAccessor(const std::string& bytes, int componentType, std::size_t count,
+                  const std::string& type, bool normalized = false) {
+    json accessor = {{"bufferView", addView(bytes)},
+                     {"componentType", componentType},
+                     {"count", count},
+                     {"type", type}};
+    if (normalized) accessor["normalized"] = true;
+    document["accessors"].push_back(accessor);
+    return static_cast<int>(document["accessors"].size()) - 1;
+  }
+
+  // A primitive with positions (and u16 indices unless `indices` is empty); returns it so
+  // tests can add attributes or a material.
+  json primitive(const std::vector<glm::vec3>& positions,
+                 const std::vector<uint16_t>& indices = {}) {
+    json result = {
+        {"attributes",
+         {{"POSITION", addAccessor(packedVec3s(positions), kFloat, positions.size(), "VEC3")}}}};
+    if (!indices.empty()) {
+      result["indices"] = addAccessor(packed(indices), kUnsignedShort, indices.size(), "SCALAR");
+    }
+    return result;
+  }
+
+  // A vector, not json: a braced single json would be copied rather than wrapped in an array.
+  int addMesh(const std::string& name, const std::vector<json>& primitives) {
+    document["meshes"].push_back({{"name", name}, {"primitives", primitives}});
+    return static_cast<int>(document["meshes"].size()) - 1;
+  }
+
+  // Writes `path` with the buffer embedded as a data URI.
+  void write(const fs::path& path) {
+    document["buffers"] = {{{"byteLength", buffer.size()},
+                            {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
+    writeFile(path, document.dump(1));
+  }
+};
+
+const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+
+class GltfModelTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    root_ = fs::temp_directory_path() / ("sightline-gltf-" + std::string(info->name()) + "-" +
+                                         std::to_string(std::random_device{}()));
+    fs::create_directories(root_);
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(root_, ignored);
+  }
+
+  // The message loadGltfModel throws, or a note that it threw nothing.
+  std::string loadError(const fs::path& file, const game::GltfSelection& selection = {}) const {
+    try {
+      game::loadGltfModel(file, root_, selection);
+    } catch (const game::LevelError& error) {
+      return error.what();
+    }
+    return "(no error)";
+  }
+
+  fs::path root_;
+};
+
+std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {
+  const std::size_t at = (std::size_t{y} * texture.width + x) * 4;
+  return {texture.rgba.at(at), texture.rgba.at(at + 1), texture.rgba.at(at + 2),
+          texture.rgba.at(at + 3)};
+}
+
+// ----- the textured crate asset -----
+
+TEST(GltfCrate, geometry_matches_the_box_primitive_with_uvs) {
+  const game::GltfModel model = game::loadGltfModel(kAssets / "crate.gltf", kAssets);
+  EXPECT_EQ(model.mesh.name, "crate");
+  EXPECT_EQ(model.mesh.indices.size(), 12u * 3u);
+  EXPECT_TRUE(model.warnings.empty());
+  // The generator lays out faces, corners and UVs as primitives::box does.
+  const render::MeshData box = game::primitives::box(glm::vec3(1.0f));
+  ASSERT_EQ(model.mesh.vertices.size(), box.vertices.size());
+  EXPECT_EQ(model.mesh.indices, box.indices);
+  for (std::size_t i = 0; i < box.vertices.size(); ++i) {
+    EXPECT_EQ(model.mesh.vertices[i].position, box.vertices[i].position) << "vertex " << i;
+    EXPECT_EQ(model.mesh.vertices[i].normal, box.vertices[i].normal) << "vertex " << i;
+    EXPECT_EQ(model.mesh.vertices[i].uv, box.vertices[i].uv) << "vertex " << i;
+  }
+  // Known corners: +X face bottom-left and top-right, top face's image top-left.
+  EXPECT_EQ(model.mesh.vertices[0].position, glm::vec3(0.5f, -0.5f, 0.5f));
+  EXPECT_EQ(model.mesh.vertices[0].uv, glm::vec2(0, 1));
+  EXPECT_EQ(model.mesh.vertices[2].position, glm::vec3(0.5f, 0.5f, -0.5f));
+  EXPECT_EQ(model.mesh.vertices[2].uv, glm::vec2(1, 0));
+  EXPECT_EQ(model.mesh.vertices[11].position, glm::vec3(-0.5f, 0.5f, -0.5f));
+  EXPECT_EQ(model.mesh.vertices[11].uv, glm::vec2(0, 0));
+}
+
+TEST(GltfCrate, material_factors_and_textures_are_mapped) {
+  const game::GltfModel model = game::loadGltfModel(kAssets / "crate.gltf", kAssets);
+  ASSERT_TRUE(model.material.has_value());
+  const game::GltfMaterial& material = *model.material;
+  EXPECT_FLOAT_EQ(material.baseColor.r, 0.9f);
+  EXPECT_FLOAT_EQ(material.baseColor.g, 0.85f);
+  EXPECT_FLOAT_EQ(material.baseColor.b, 0.8f);
+  EXPECT_FLOAT_EQ(material.roughness, 0.75f);
+  EXPECT_FLOAT_EQ(material.specular, 0.04f);  // metallicFactor 0
+  EXPECT_EQ(material.emissive, glm::vec3(0.0f));
+
+  ASSERT_TRUE(material.colorTexture.has_value());
+  const render::TextureDesc& color = *material.colorTexture;
+  EXPECT_EQ(color.name, (kAssets / "crate_color.png").string());
+  EXPECT_TRUE(color.srgb);
+  EXPECT_EQ(color.width, 64u);
+  EXPECT_EQ(color.height, 64u);
+  EXPECT_EQ(texel(color, 0, 0), (std::array<uint8_t, 4>{92, 62, 34, 255}));
+  EXPECT_EQ(texel(color, 32, 8), (std::array<uint8_t, 4>{167, 117, 65, 255}));
+  EXPECT_EQ(texel(color, 40, 15), (std::array<uint8_t, 4>{60, 40, 22, 255}));
+
+  ASSERT_TRUE(material.normalTexture.has_value());
+  const render::TextureDesc& normal = *material.normalTexture;
+  EXPECT_FALSE(normal.srgb);
+  EXPECT_EQ(normal.width, 32u);
+  EXPECT_EQ(normal.height, 32u);
+  EXPECT_EQ(texel(normal, 16, 20), (std::array<uint8_t, 4>{128, 128, 255, 255}));
+  EXPECT_EQ(texel(normal, 16, 16), (std::array<uint8_t, 4>{128, 185, 242, 255}));
+}
+
+TEST(GltfCrate, files_read_lists_the_model_buffer_and_images) {
+  const fs::path file = kAssets / "crate.gltf";
+  const game::GltfModel model = game::loadGltfModel(file, kAssets);
+  EXPECT_EQ(model.filesRead,
+            (std::vector<fs::path>{file, kAssets / "crate.bin", kAssets / "crate_color.png",
+                                   kAssets / "crate_normal.png"}));
+}
+
+// ----- geometry -----
+
+TEST_F(GltfModelTest, missing_normals_are_area_weighted_face_normals) {
+  GltfBuilder gltf;
+  // Vertex 0 is shared by a triangle of doubled area 4 facing +Z and one of doubled area 1
+  // facing +X.
+  gltf.addMesh("fan", {gltf.primitive({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 1, 0}, {0, 0, 1}},
+                                      {0, 1, 2, 0, 3, 4})});
+  gltf.write(root_ / "fan.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "fan.gltf", root_);
+  ASSERT_EQ(model.mesh.vertices.size(), 5u);
+  const glm::vec3 shared = model.mesh.vertices[0].normal;
+  const glm::vec3 expected = glm::vec3(1, 0, 4) / std::sqrt(17.0f);
+  EXPECT_NEAR(shared.x, expected.x, 1e-6f);
+  EXPECT_NEAR(shared.y, expected.y, 1e-6f);
+  EXPECT_NEAR(shared.z, expected.z, 1e-6f);
+  EXPECT_EQ(model.mesh.vertices[1].normal, glm::vec3(0, 0, 1));
+  EXPECT_EQ(model.mesh.vertices[4].normal, glm::vec3(1, 0, 0));
+  EXPECT_EQ(model.mesh.vertices[1].uv, glm::vec2(0, 0));  // no TEXCOORD_0: zero
+  EXPECT_FALSE(model.material.has_value());
+}
+
+TEST_F(GltfModelTest, uvs_may_be_floats_or_normalized_bytes_and_shorts) {
+  GltfBuilder gltf;
+  json floats = gltf.primitive(kTriangle);
+  floats["attributes"]["TEXCOORD_0"] =
+      gltf.addAccessor(packed(std::vector<float>{0.25f, 0.5f, 1, 0, 2, -1}), kFloat, 3, "VEC2");
+  json bytes = gltf.primitive(kTriangle);
+  bytes["attributes"]["TEXCOORD_0"] = gltf.addAccessor(
+      packed(std::vector<uint8_t>{255, 0, 0, 255, 51, 102}), kUnsignedByte, 3, "VEC2", true);
+  json shorts = gltf.primitive(kTriangle);
+  shorts["attributes"]["TEXCOORD_0"] =
+      gltf.addAccessor(packed(std::vector<uint16_t>{65535, 0, 0, 65535, 13107, 32768}),
+                       kUnsignedShort, 3, "VEC2", true);
+  gltf.addMesh("uvs", {floats, bytes, shorts});
+  gltf.write(root_ / "uvs.gltf");
+
+  const game::GltfModel model = game::loadGltfModel(root_ / "uvs.gltf", root_);
+  ASSERT_EQ(model.mesh.vertices.size(), 9u);
+  const auto uv = [&](std::size_t i) { return model.mesh.vertices[i].uv; };
+  EXPECT_EQ(uv(0), glm::vec2(0.25f, 0.5f));
+  EXPECT_EQ(uv(2), glm::vec2(2, -1));  // outside [0, 1] is fine: textures repeat
+  EXPECT_EQ(uv(3), glm::vec2(1, 0));
+  EXPECT_EQ(uv(4), glm::vec2(0, 1));
+  EXPECT_FLOAT_EQ(uv(5).x, 0.2f);
+  EXPECT_FLOAT_EQ(uv(5).y, 0.4f);
+  EXPECT_EQ(uv(6), glm::vec2(1, 0));
+  EXPECT_FLOAT_EQ(uv(8).x, 0.2f);
+  EXPECT_FLOAT_EQ(uv(8).y, 32768.0f / 65535.0f);
+  EXPECT_EQ(model.mesh.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+TEST_F(GltfModelTest, uvs_of_the_wrong_type_or_count_are_refused) {
+  GltfBuilder gltf;
+  json primitive = gltf.primitive(kTriangle);
+  const int unnormalized =
+      gltf.addAccessor(packed(std::vector<uint8_t>{1, 0, 0, 1, 1, 1}), kUnsignedByte, 3, "VEC2");
+  primitive["attributes"]["TEXCOORD_0"] = unnormalized;
+  gltf.addMesh("bad", {primitive});
+  gltf.write(root_ / "bad.gltf");
+  EXPECT_EQ(loadError(root_ / "bad.gltf"),
+            (root_ / "bad.gltf").string() +
+                ": mesh \"bad\" primitive 0 TEXCOORD_0 (accessor 1) must hold VEC2 floats or "
+                "normalized unsigned bytes or shorts");
+
+  GltfBuilder twoUvModel;
+  json twoUvs = twoUvModel.primitive(kTriangle);
+  twoUvs["attributes"]["TEXCOORD_0"] =
+      twoUvModel.addAccessor(packed(std::vector<float>{0, 0, 1, 1}), kFloat, 2, "VEC2");
+  twoUvModel.addMesh("short", {twoUvs});
+  twoUvModel.write(root_ / "short.gltf");
+  EXPECT_EQ(
+      loadError(root_ / "short.gltf"),
+      (root_ / "short.gltf").string() + ": mesh \"short\" primitive 0 has 2 UVs for 3 positions");
+}
+
+TEST_F(GltfModelTest, degenerate_triangles_are_dropped_with_a_warning) {
+  GltfBuilder gltf;
+  // Vertex 3 repeats vertex 1's position; 4 lies on the line through 0 and 1.
+  gltf.addMesh("mixed", {gltf.primitive({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 0, 0}, {3, 0, 0}},
+                                        {0, 1, 2,      // fine
+                                         0, 0, 2,      // a repeated index
+                                         1, 3, 2,      // two corners at one position
+                                         0, 1, 4})});  // collinear
+  gltf.write(root_ / "mixed.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "mixed.gltf", root_);
+  EXPECT_EQ(model.mesh.indices, (std::vector<uint32_t>{0, 1, 2}));
+  EXPECT_EQ(model.warnings, (std::vector<std::string>{(root_ / "mixed.gltf").string() +
+                                                      ": dropped 3 degenerate triangles"}));
+  // Normals come from the surviving triangle alone.
+  EXPECT_EQ(model.mesh.vertices[0].normal, glm::vec3(0, 0, 1));
+}
+
+TEST_F(GltfModelTest, model_of_only_degenerate_triangles_is_an_error) {
+  GltfBuilder gltf;
+  gltf.addMesh("flat", {gltf.primitive({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}, {0, 1, 2, 2, 2, 1})});
+  gltf.write(root_ / "flat.gltf");
+  EXPECT_EQ(loadError(root_ / "flat.gltf"),
+            (root_ / "flat.gltf").string() + ": all 2 triangles are degenerate (zero area)");
+}
+
+// ----- selection -----
+
+// Root (translated +10 X) holds Left (mesh "Tri", up 1) and Right (mesh "Big", scaled x2).
+GltfBuilder nodeTree() {
+  GltfBuilder gltf;
+  gltf.addMesh("Tri", {gltf.primitive(kTriangle)});
+  gltf.addMesh("Big", {gltf.primitive(kTriangle)});
+  gltf.document["nodes"] = {
+      {{"name", "Root"}, {"translation", {10, 0, 0}}, {"children", {1, 2}}},
+      {{"name", "Left"}, {"mesh", 0}, {"translation", {0, 1, 0}}},
+      {{"name", "Right"}, {"mesh", 1}, {"scale", {2, 2, 2}}},
+  };
+  gltf.document["scenes"] = {{{"nodes", {0}}}};
+  gltf.document["scene"] = 0;
+  return gltf;
+}
+
+std::vector<glm::vec3> positionsOf(const render::MeshData& mesh) {
+  std::vector<glm::vec3> positions;
+  for (const render::Vertex& vertex : mesh.vertices) positions.push_back(vertex.position);
+  return positions;
+}
+
+TEST_F(GltfModelTest, default_selection_is_the_scene_with_transforms_in_document_order) {
+  nodeTree().write(root_ / "tree.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "tree.gltf", root_);
+  EXPECT_EQ(model.mesh.name, "tree");
+  EXPECT_EQ(positionsOf(model.mesh),
+            (std::vector<glm::vec3>{
+                {10, 1, 0}, {11, 1, 0}, {10, 2, 0}, {10, 0, 0}, {12, 0, 0}, {10, 2, 0}}));
+  EXPECT_EQ(model.mesh.indices, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+}
+
+TEST_F(GltfModelTest, node_selection_takes_the_node_and_children_where_the_scene_puts_them) {
+  GltfBuilder gltf = nodeTree();
+  gltf.document["nodes"][1]["children"] = {2};  // Left now also carries Right
+  gltf.document["nodes"][0]["children"] = {1};
+  gltf.write(root_ / "tree.gltf");
+  game::GltfSelection selection;
+  selection.node = "Left";
+  const game::GltfModel model = game::loadGltfModel(root_ / "tree.gltf", root_, selection);
+  EXPECT_EQ(model.mesh.name, "Left");
+  // Root's translation and Left's own apply; Right is scaled inside Left.
+  EXPECT_EQ(positionsOf(model.mesh),
+            (std::vector<glm::vec3>{
+                {10, 1, 0}, {11, 1, 0}, {10, 2, 0}, {10, 1, 0}, {12, 1, 0}, {10, 3, 0}}));
+  selection.node = "Right";
+  EXPECT_EQ(positionsOf(game::loadGltfModel(root_ / "tree.gltf", root_, selection).mesh),
+            (std::vector<glm::vec3>{{10, 1, 0}, {12, 1, 0}, {10, 3, 0}}));
+}
+
+TEST_F(GltfModelTest, mesh_selection_ignores_node_transforms) {
+  nodeTree().write(root_ / "tree.gltf");
+  game::GltfSelection selection;
+  selection.mesh = "Big";
+  const game::GltfModel model = game::loadGltfModel(root_ / "tree.gltf", root_, selection);
+  EXPECT_EQ(model.mesh.name, "Big");
+  EXPECT_EQ(positionsOf(model.mesh), kTriangle);
+  // The wrapper the level loader still uses selects the same way.
+  EXPECT_EQ(positionsOf(game::loadGltfMesh(root_ / "tree.gltf", root_, "Big")), kTriangle);
+}
+
+TEST_F(GltfModelTest, unknown_node_or_mesh_names_list_the_available_ones) {
+  GltfBuilder gltf = nodeTree();
+  gltf.document["nodes"].push_back(json::object());  // an unnamed node
+  gltf.write(root_ / "tree.gltf");
+  const std::string prefix = (root_ / "tree.gltf").string() + ": ";
+  game::GltfSelection selection;
+  selection.node = "Middle";
+  EXPECT_EQ(loadError(root_ / "tree.gltf", selection),
+            prefix +
+                "has no node named \"Middle\"; its nodes are: \"Root\", \"Left\", \"Right\", "
+                "(unnamed #3)");
+  selection = {};
+  selection.mesh = "Small";
+  EXPECT_EQ(loadError(root_ / "tree.gltf", selection),
+            prefix + "has no mesh named \"Small\"; its meshes are: \"Tri\", \"Big\"");
+}
+
+TEST_F(GltfModelTest, mirroring_node_keeps_counter_clockwise_winding) {
+  GltfBuilder gltf;
+  gltf.addMesh("Tri", {gltf.primitive(kTriangle, {0, 1, 2})});
+  gltf.document["nodes"] = {{{"mesh", 0}, {"scale", {-1, 1, 1}}}};
+  gltf.document["scenes"] = {{{"nodes", {0}}}};
+  gltf.write(root_ / "mirror.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "mirror.gltf", root_);
+  EXPECT_EQ(model.mesh.indices, (std::vector<uint32_t>{0, 2, 1}));
+  const auto& v = model.mesh.vertices;
+  const glm::vec3 face = glm::cross(v[model.mesh.indices[1]].position - v[0].position,
+                                    v[model.mesh.indices[2]].position - v[0].position);
+  EXPECT_GT(face.z, 0.0f);  // still facing +Z, like the unmirrored triangle
+  EXPECT_EQ(v[1].normal, glm::vec3(0, 0, 1));
+}
+
+// ----- materials and textures -----
+
+TEST_F(GltfModelTest, first_primitives_material_is_mapped_with_defaults) {
+  GltfBuilder gltf;
+  json first = gltf.primitive(kTriangle);
+  first["material"] = 1;
+  json second = gltf.primitive(kTriangle);
+  second["material"] = 0;
+  gltf.addMesh("two", {first, second});
+  gltf.document["materials"] = {
+      {{"name", "unused"}},
+      {{"name", "shiny"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.5, 0.25, 1.0, 0.5}}, {"metallicFactor", 0.5}}},
+       {"emissiveFactor", {0.25, 0.5, 1.0}}},
+  };
+  gltf.write(root_ / "two.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "two.gltf", root_);
+  ASSERT_TRUE(model.material.has_value());
+  EXPECT_EQ(model.material->baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_FLOAT_EQ(model.material->specular, 0.04f + 0.96f * 0.5f);
+  EXPECT_FLOAT_EQ(model.material->roughness, 1.0f);  // glTF's default roughnessFactor
+  EXPECT_EQ(model.material->emissive, glm::vec3(0.25f, 0.5f, 1.0f));
+  EXPECT_FALSE(model.material->colorTexture.has_value());
+  EXPECT_FALSE(model.material->normalTexture.has_value());
+}
+
+// A one-triangle model whose material uses image 0 as its base colour texture.
+GltfBuilder texturedTriangle(const json& image) {
+  GltfBuilder gltf;
+  json primitive = gltf.primitive(kTriangle);
+  primitive["material"] = 0;
+  gltf.addMesh("Tri", {primitive});
+  gltf.document["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+  gltf.document["textures"] = {{{"source", 0}}};
+  gltf.document["images"] = json::array({image});
+  return gltf;
+}
+
+TEST_F(GltfModelTest, embedded_data_uri_image_is_decoded) {
+  texturedTriangle({{"uri", "data:image/png;base64," + base64(tinyPng())}})
+      .write(root_ / "embedded.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "embedded.gltf", root_);
+  ASSERT_TRUE(model.material && model.material->colorTexture);
+  const render::TextureDesc& texture = *model.material->colorTexture;
+  EXPECT_EQ(texture.name, (root_ / "embedded.gltf").string() + " image 0");
+  EXPECT_EQ(texture.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
+  EXPECT_EQ(model.filesRead, std::vector<fs::path>{root_ / "embedded.gltf"});
+}
+
+TEST_F(GltfModelTest, glb_image_in_a_buffer_view_is_decoded) {
+  GltfBuilder gltf = texturedTriangle(json::object());
+  gltf.document["images"][0] = {{"bufferView", gltf.addView(tinyPng())}, {"mimeType", "image/png"}};
+  gltf.document["buffers"] = {{{"byteLength", gltf.buffer.size()}}};  // the BIN chunk
+  std::string text = gltf.document.dump();
+  text.resize((text.size() + 3) / 4 * 4, ' ');
+  std::string bin = gltf.buffer;
+  bin.resize((bin.size() + 3) / 4 * 4, '\0');
+  const auto u32 = [](std::size_t value) {
+    const uint32_t v = static_cast<uint32_t>(value);
+    return std::string(reinterpret_cast<const char*>(&v), 4);
+  };
+  writeFile(root_ / "tri.glb", "glTF" + u32(2) + u32(12 + 8 + text.size() + 8 + bin.size()) +
+                                   u32(text.size()) + "JSON" + text + u32(bin.size()) +
+                                   std::string("BIN\0", 4) + bin);
+  const game::GltfModel model = game::loadGltfModel(root_ / "tri.glb", root_);
+  ASSERT_TRUE(model.material && model.material->colorTexture);
+  EXPECT_EQ(model.material->colorTexture->rgba,
+            (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
+}
+
+TEST_F(GltfModelTest, image_uri_outside_the_allowed_root_is_refused) {
+  writeFile(root_.parent_path() / (root_.filename().string() + "-secret.png"), tinyPng());
+  texturedTriangle({{"uri", "../" + root_.filename().string() + "-secret.png"}})
+      .write(root_ / "sneaky.gltf");
+  const std::string error = loadError(root_ / "sneaky.gltf");
+  fs::remove(root_.parent_path() / (root_.filename().string() + "-secret.png"));
+  EXPECT_EQ(error.rfind((root_ / "sneaky.gltf").string() + ": refers to \"", 0), 0u) << error;
+  EXPECT_NE(error.find("-secret.png\", which is outside the directory the model was found in"),
+            std::string::npos)
+      << error;
+}
+
+TEST_F(GltfModelTest, missing_or_bad_images_are_errors_naming_model_and_image) {
+  const std::string prefix = (root_ / "m.gltf").string() + ": material 0 baseColorTexture";
+  texturedTriangle({{"uri", "nowhere.png"}}).write(root_ / "m.gltf");
+  EXPECT_EQ(loadError(root_ / "m.gltf"),
+            prefix + " image 0 \"nowhere.png\" was not found or could not be read");
+
+  writeFile(root_ / "half.png", tinyPng().substr(0, 40));
+  texturedTriangle({{"uri", "half.png"}}).write(root_ / "m.gltf");
+  EXPECT_EQ(
+      loadError(root_ / "m.gltf")
+          .rfind(prefix + ": " + (root_ / "half.png").string() + ": cannot decode the PNG image",
+                 0),
+      0u);
+}
+
+TEST_F(GltfModelTest, oversized_embedded_image_is_refused_before_decoding) {
+  // Signature and IHDR of a 5000x5000 RGBA PNG and nothing else: only the header is read.
+  const std::string header =
+      std::string("\x89PNG\r\n\x1a\n", 8) +
+      std::string("\0\0\0\x0dIHDR\0\0\x13\x88\0\0\x13\x88\x08\x06\0\0\0", 21) +
+      std::string(4, '\0');
+  texturedTriangle({{"uri", "data:image/png;base64," + base64(header)}}).write(root_ / "big.gltf");
+  const std::string file = (root_ / "big.gltf").string();
+  EXPECT_EQ(loadError(root_ / "big.gltf"),
+            file + ": material 0 baseColorTexture: " + file +
+                " image 0: image is 5000x5000; textures are limited to 4096x4096");
+}
+
+TEST_F(GltfModelTest, texture_that_names_no_image_is_an_error) {
+  GltfBuilder gltf = texturedTriangle({{"uri", "data:image/png;base64," + base64(tinyPng())}});
+  gltf.document["textures"][0].erase("source");
+  gltf.write(root_ / "m.gltf");
+  EXPECT_EQ(loadError(root_ / "m.gltf"), (root_ / "m.gltf").string() +
+                                             ": material 0 baseColorTexture uses texture 0, "
+                                             "which has no PNG or JPEG image");
+}
+
+TEST_F(GltfModelTest, external_buffer_and_image_are_listed_in_files_read) {
+  GltfBuilder gltf = texturedTriangle({{"uri", "textures/tiny.png"}});
+  writeFile(root_ / "textures" / "tiny.png", tinyPng());
+  gltf.document["buffers"] = {{{"byteLength", gltf.buffer.size()}, {"uri", "tri.bin"}}};
+  writeFile(root_ / "tri.bin", gltf.buffer);
+  writeFile(root_ / "tri.gltf", gltf.document.dump());
+  const game::GltfModel model = game::loadGltfModel(root_ / "tri.gltf", root_);
+  EXPECT_EQ(model.filesRead, (std::vector<fs::path>{root_ / "tri.gltf", root_ / "tri.bin",
+                                                    root_ / "textures" / "tiny.png"}));
+  EXPECT_EQ(model.material->colorTexture->name, (root_ / "textures" / "tiny.png").string());
+  EXPECT_EQ(readFile(root_ / "tri.bin"), gltf.buffer);
+}
+
+}  // namespace
