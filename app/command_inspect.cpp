@@ -17,6 +17,11 @@ int commandValidate(const Options& options) {
   if (options.positional.empty()) throw UsageError("validate: expected level files");
   int failures = 0;
   for (const std::string& file : options.positional) {
+    // `sightline validate levels/*.json` also matches the editor schema, which is no level.
+    if (file.ends_with(".schema.json")) {
+      std::printf("%s: skipped (a JSON schema for editors, not a level)\n", file.c_str());
+      continue;
+    }
     try {
       const game::Level level = game::loadLevel(file);
       std::printf("%s: ok (%zu entities, %zu meshes, %zu lights)\n", file.c_str(),

@@ -89,6 +89,7 @@ std::string describe(const Json& value) {
     const auto& text = value.get_ref<const std::string&>();
     if (text.size() > kMaxShown) return dump(Json(text.substr(0, kMaxShown))) + "...";
   }
+  if (value.is_number_float()) return formatNumber(value.get<double>());
   return dump(value);
 }
 
@@ -786,15 +787,17 @@ class LevelParser {
     }
     const fs::path lexical = (base / relative).lexically_normal();
 
-    // Canonical forms follow symbolic links; a file is allowed in either directory tree.
+    // Canonical forms follow symbolic links; a file is allowed in either directory tree. Both
+    // sides are made absolute first: weakly_canonical keeps a path relative when no prefix of
+    // it exists, while the roots always exist.
     std::error_code error;
-    const fs::path canonicalFile = fs::weakly_canonical(lexical, error);
+    const fs::path canonicalFile = fs::weakly_canonical(fs::absolute(lexical), error);
     std::vector<fs::path> allowedRoots;
     if (!error) {
       for (const auto& directory : {std::optional<fs::path>(levelDirectory_), assets}) {
         if (!directory) continue;
         std::error_code rootError;
-        const fs::path canonicalRoot = fs::weakly_canonical(*directory, rootError);
+        const fs::path canonicalRoot = fs::weakly_canonical(fs::absolute(*directory), rootError);
         if (!rootError) allowedRoots.push_back(canonicalRoot);
       }
     }
