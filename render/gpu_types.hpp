@@ -14,4 +14,7 @@ static_assert(offsetof(GpuMaterial, emissiveRoughness) == 16);
 static_assert(sizeof(GpuLight) == 64);
 static_assert(offsetof(GpuLight, radianceRadius) == 32);
 static_assert(sizeof(FrameCounters) == 16);
+static_assert(sizeof(ProbeSetup) == 16 * (1 + MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
+static_assert(sizeof(ProbePoint) == 32);
+static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 }  // namespace render::gpu

@@ -76,6 +76,9 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
     group.anyHitShader = stages.add(hitGroup.anyHit, VK_SHADER_STAGE_ANY_HIT_BIT_KHR);
     groups.push_back(group);
   }
+  const bool probeRaygen = !program.probeRaygen.spirv.empty();
+  if (probeRaygen)
+    groups.push_back(generalGroup(stages.add(program.probeRaygen, VK_SHADER_STAGE_RAYGEN_BIT_KHR)));
 
   VkRayTracingPipelineCreateInfoKHR createInfo{
       VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
@@ -95,7 +98,7 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
   const SbtProperties sbtProperties{properties.shaderGroupHandleSize,
                                     properties.shaderGroupHandleAlignment,
                                     properties.shaderGroupBaseAlignment};
-  layout_ = computeSbtLayout(sbtProperties, missCount, hitCount);
+  layout_ = computeSbtLayout(sbtProperties, missCount, hitCount, probeRaygen);
   const uint32_t handleSize = properties.shaderGroupHandleSize;
   std::vector<uint8_t> handles(groups.size() * handleSize);
   vkCheck(context.rt().getGroupHandles(context.device(), pipeline_, 0,
@@ -119,6 +122,11 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
     writeHandle(1 + i, layout_.miss.offset + i * layout_.miss.stride);
   for (uint32_t i = 0; i < hitCount; ++i)
     writeHandle(1 + missCount + i, layout_.hit.offset + i * layout_.hit.stride);
+  if (probeRaygen) {
+    writeHandle(1 + missCount + hitCount, layout_.probeRaygen.offset);
+    probeRaygenRegion_ = {base + layout_.probeRaygen.offset, layout_.probeRaygen.stride,
+                          layout_.probeRaygen.size};
+  }
   raygenRegion_ = {base + layout_.raygen.offset, layout_.raygen.stride, layout_.raygen.size};
   missRegion_ = {base + layout_.miss.offset, layout_.miss.stride, layout_.miss.size};
   hitRegion_ = {base + layout_.hit.offset, layout_.hit.stride, layout_.hit.size};
@@ -132,6 +140,13 @@ void RayTracingPipeline::recordTrace(VkCommandBuffer commands, uint32_t width,
                                      uint32_t height) const {
   context_.rt().cmdTraceRays(commands, &raygenRegion_, &missRegion_, &hitRegion_, &callableRegion_,
                              width, height, 1);
+}
+
+void RayTracingPipeline::recordProbeTrace(VkCommandBuffer commands, uint32_t width,
+                                          uint32_t height) const {
+  if (!hasProbeRaygen()) throw RenderError("recordProbeTrace: the pipeline has no probe ray-gen");
+  context_.rt().cmdTraceRays(commands, &probeRaygenRegion_, &missRegion_, &hitRegion_,
+                             &callableRegion_, width, height, 1);
 }
 
 }  // namespace render

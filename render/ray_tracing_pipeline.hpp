@@ -31,6 +31,7 @@ struct RayTracingProgram {
   std::vector<ShaderCode> misses;
   std::vector<HitGroup> hitGroups;
   uint32_t recursionDepth = 1;  // how deep the shaders nest traceRayEXT calls
+  ShaderCode probeRaygen;       // a second ray-gen, for exposure probes; empty spirv: none
 };
 
 class RayTracingPipeline {
@@ -45,6 +46,9 @@ class RayTracingPipeline {
 
   VkPipeline handle() const { return pipeline_; }
   void recordTrace(VkCommandBuffer commands, uint32_t width, uint32_t height) const;
+  // Launches the probe ray-gen (the program must have one) with the same miss and hit groups.
+  void recordProbeTrace(VkCommandBuffer commands, uint32_t width, uint32_t height) const;
+  bool hasProbeRaygen() const { return layout_.probeRaygen.size != 0; }
   const SbtLayout& sbtLayout() const { return layout_; }
 
  private:
@@ -53,6 +57,7 @@ class RayTracingPipeline {
   Buffer sbt_;
   SbtLayout layout_;
   VkStridedDeviceAddressRegionKHR raygenRegion_{}, missRegion_{}, hitRegion_{}, callableRegion_{};
+  VkStridedDeviceAddressRegionKHR probeRaygenRegion_{};
 };
 
 VkShaderModule createShaderModule(const Context& context, const std::vector<uint32_t>& spirv,

@@ -133,7 +133,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   frameUniforms_ = Buffer(context, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                           MemoryUse::Upload, "frame uniforms");
   // Shaders write counters and paths in device memory; the host reads copies.
-  constexpr VkDeviceSize kCounterBytes = sizeof(gpu::FrameCounters) * COUNTER_SLOTS;
+  constexpr VkDeviceSize kCounterBytes =
+      sizeof(gpu::FrameCounters) * COUNTER_SLOTS + sizeof(gpu::ProbeResults);
   counters_ = Buffer(context, kCounterBytes,
                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                          VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -143,6 +144,13 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   paths_ = Buffer(context, VkDeviceSize(options.width) * options.height * sizeof(gpu::PixelPath),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                   MemoryUse::DeviceOnly, "pixel paths");
+  // Probe setup and points: host-written each time the request changes; zero = no probes.
+  probeSetup_ = Buffer(
+      context,
+      sizeof(gpu::ProbeSetup) + sizeof(gpu::ProbePoint) * MAX_EXPOSURE_PROBES * EXPOSURE_SAMPLES,
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "probe setup");
+  const gpu::ProbeSetup noProbes{};
+  probeSetup_.write(&noProbes, sizeof noProbes);
   readback_ = Buffer(context, VkDeviceSize(options.width) * options.height * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
 
@@ -185,7 +193,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
   createDescriptors();
-  createPipelines(compiler, features);
+  createPipelines(compiler, features, scene.exposureProbes);
 
   VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocateInfo.commandPool = context.commandPool();
@@ -220,7 +228,7 @@ Renderer::~Renderer() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 11> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 12> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -232,6 +240,7 @@ void Renderer::createDescriptors() {
       {BINDING_INDICES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_PATHS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_PROBE_SETUP, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
   constexpr uint32_t kSets = 2;
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
@@ -274,7 +283,7 @@ void Renderer::createDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   tlasWrite.accelerationStructureCount = 1;
   tlasWrite.pAccelerationStructures = &tlas;
-  const std::array<std::pair<uint32_t, const Buffer*>, 8> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 9> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -283,6 +292,7 @@ void Renderer::createDescriptors() {
       {BINDING_INDICES, &indices_},
       {BINDING_COUNTERS, &counters_},
       {BINDING_PATHS, &paths_},
+      {BINDING_PROBE_SETUP, &probeSetup_},
   }};
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)
@@ -337,7 +347,8 @@ void Renderer::createDescriptors() {
           "vkCreatePipelineLayout");
 }
 
-void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features) {
+void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
+                               bool exposureProbes) {
   pipelineDescription_ = describePipeline(features);
   const ShaderDefines& defines = pipelineDescription_.defines;
   auto load = [&](const std::string& file) {
@@ -352,6 +363,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
     program.hitGroups.push_back(std::move(hitGroup));
   }
   program.recursionDepth = pipelineDescription_.recursionDepth;
+  if (exposureProbes) program.probeRaygen = load("probe.rgen");
   rayTracingPipeline_ = std::make_unique<RayTracingPipeline>(context_, pipelineLayout_, program);
 
   tonemapPipeline_ = createComputePipeline(
@@ -399,6 +411,53 @@ std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
   std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
   staging.read(result.data(), result.size() * sizeof(gpu::PixelPath));
   return result;
+}
+
+PixelBox focusPixelBox(glm::vec2 region, uint32_t width, uint32_t height) {
+  auto span = [](float fraction, uint32_t size) {
+    return std::clamp(uint32_t(std::lround(double(fraction) * size)), 1u, size);
+  };
+  const uint32_t boxWidth = span(region.x, width), boxHeight = span(region.y, height);
+  const uint32_t x0 = (width - boxWidth) / 2, y0 = (height - boxHeight) / 2;
+  return {x0, y0, x0 + boxWidth, y0 + boxHeight};
+}
+
+void Renderer::setProbes(const ProbeRequest& request) {
+  if (request.focus.size() > MAX_FOCUS_PROBES || request.exposure.size() > MAX_EXPOSURE_PROBES)
+    throw RenderError("setProbes: at most 16 focus and 16 exposure probes");
+  if (!request.exposure.empty() && !rayTracingPipeline_->hasProbeRaygen())
+    throw RenderError("setProbes: exposure probes need a scene made with exposureProbes");
+  gpu::ProbeSetup setup{};
+  setup.counts = glm::uvec4(request.focus.size(), request.exposure.size(), 0, 0);
+  ProbeCounts counts;
+  for (size_t i = 0; i < request.focus.size(); ++i) {
+    const FocusProbeDesc& focus = request.focus[i];
+    if (focus.instance >= currentTransforms_.size())
+      throw RenderError("setProbes: a focus probe names an instance that does not exist");
+    const PixelBox box = focusPixelBox(focus.region, options_.width, options_.height);
+    setup.focus[i] =
+        glm::uvec4(focus.instance, box.x0 | (box.y0 << 16), box.x1 | (box.y1 << 16), 0);
+    counts.focusRegionPixels.push_back(box.pixels());
+  }
+  std::vector<gpu::ProbePoint> points(size_t(MAX_EXPOSURE_PROBES) * EXPOSURE_SAMPLES);
+  for (size_t i = 0; i < request.exposure.size(); ++i) {
+    const ExposureProbeDesc& exposure = request.exposure[i];
+    if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
+      throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
+    setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(), 0, 0);
+    for (size_t p = 0; p < exposure.points.size(); ++p) {
+      const ExposurePoint& point = exposure.points[p];
+      points[i * EXPOSURE_SAMPLES + p] = {glm::vec4(point.position, 1.0f),
+                                          glm::vec4(point.normal, point.oneSided ? 1.0f : 0.0f)};
+    }
+    counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
+  }
+  counts.focusPixels.assign(request.focus.size(), 0);
+  counts.exposureFixed.assign(request.exposure.size(), 0);
+  probeSetup_.write(&setup, sizeof setup);
+  probeSetup_.write(points.data(), points.size() * sizeof(gpu::ProbePoint), sizeof setup);
+  probeRequest_ = request;
+  probeCounts_ = std::move(counts);
 }
 
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
@@ -490,6 +549,14 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
                           &descriptorSets_[parity_], 0, nullptr);
   rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
+  if (!probeRequest_.exposure.empty()) {
+    // Both launches add into the probe results.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                  VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    rayTracingPipeline_->recordProbeTrace(commands, EXPOSURE_SAMPLES,
+                                          uint32_t(probeRequest_.exposure.size()));
+  }
   memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
@@ -588,6 +655,12 @@ FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
     auto between = [&](int from, int to) { return double(ticks[to] - ticks[from]) * msPerTick; };
     stats.gpu = {between(0, 1), between(1, 2), between(2, 3), between(3, 4)};
   }
+  gpu::ProbeResults probeResults{};
+  countersReadback_.read(&probeResults, sizeof probeResults, sizeof slots);
+  for (size_t i = 0; i < probeRequest_.focus.size(); ++i)
+    probeCounts_.focusPixels[i] = probeResults.focusPixels[i];
+  for (size_t i = 0; i < probeRequest_.exposure.size(); ++i)
+    probeCounts_.exposureFixed[i] = probeResults.exposure[i];
   stats.surfaceRays = counters.surfaceRays;
   stats.secondaryRays = counters.secondaryRays;
   if (readback) {

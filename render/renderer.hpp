@@ -15,6 +15,7 @@
 #include "render/denoiser.hpp"
 #include "render/gpu_types.hpp"
 #include "render/pipeline_variant.hpp"
+#include "render/probes.hpp"
 #include "render/scene_desc.hpp"
 
 namespace render {
@@ -69,6 +70,12 @@ class Renderer {
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
 
+  // What the probes measure from the next frame on (replaces the previous request). Exposure
+  // probes need a scene made with exposureProbes.
+  void setProbes(const ProbeRequest& request);
+  // The probes' results of the last frame rendered.
+  const ProbeCounts& probeCounts() const { return probeCounts_; }
+
   // Turns a light on or off from the next frame (switches).
   void setLightEnabled(uint32_t light, bool enabled);
 
@@ -89,7 +96,8 @@ class Renderer {
 
  private:
   void createDescriptors();
-  void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features);
+  void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
+                       bool exposureProbes);
   void writeFrameUniforms(const FrameDesc& frame);
   void writeInstanceMotion();
   uint32_t denoiserIterations(const FrameDesc& frame) const;
@@ -110,6 +118,9 @@ class Renderer {
   Buffer counters_;
   Buffer countersReadback_;
   Buffer paths_;
+  Buffer probeSetup_;
+  ProbeRequest probeRequest_;
+  ProbeCounts probeCounts_;
   PipelineDescription pipelineDescription_;
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;

@@ -90,6 +90,8 @@ struct SceneDesc {
   std::vector<LightDesc> lights;
   EnvironmentDesc environment;
   uint32_t maxMirrorBounces = 4;  // [0, 31]
+  // The level has exposure probes (lit goals, stealth): the pipeline gets the probe ray-gen.
+  bool exposureProbes = false;
 };
 
 struct CameraDesc {

@@ -9,7 +9,8 @@ uint64_t alignTo(uint64_t value, uint64_t alignment) {
 }
 }  // namespace
 
-SbtLayout computeSbtLayout(const SbtProperties& properties, uint32_t missCount, uint32_t hitCount) {
+SbtLayout computeSbtLayout(const SbtProperties& properties, uint32_t missCount, uint32_t hitCount,
+                           bool probeRaygen) {
   if (properties.handleSize == 0 || properties.handleAlignment == 0 ||
       properties.baseAlignment == 0) {
     throw std::invalid_argument("shader binding table properties must be non-zero");
@@ -27,6 +28,12 @@ SbtLayout computeSbtLayout(const SbtProperties& properties, uint32_t missCount, 
   layout.hit.stride = recordStride;
   layout.hit.size = alignTo(recordStride * hitCount, properties.baseAlignment);
   layout.totalSize = layout.hit.offset + layout.hit.size;
+  if (probeRaygen) {
+    layout.probeRaygen.offset = alignTo(layout.totalSize, properties.baseAlignment);
+    layout.probeRaygen.stride = layout.raygen.stride;
+    layout.probeRaygen.size = layout.raygen.size;
+    layout.totalSize = layout.probeRaygen.offset + layout.probeRaygen.size;
+  }
   return layout;
 }
 

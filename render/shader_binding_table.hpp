@@ -15,6 +15,7 @@ struct SbtLayout {
   SbtRegion raygen;  // exactly one record; its size equals its stride
   SbtRegion miss;
   SbtRegion hit;
+  SbtRegion probeRaygen;  // the exposure probes' ray-gen, after the hit groups (size 0: none)
   uint64_t totalSize = 0;
 };
 
@@ -24,6 +25,7 @@ struct SbtProperties {
   uint32_t baseAlignment = 0;
 };
 
-SbtLayout computeSbtLayout(const SbtProperties& properties, uint32_t missCount, uint32_t hitCount);
+SbtLayout computeSbtLayout(const SbtProperties& properties, uint32_t missCount, uint32_t hitCount,
+                           bool probeRaygen = false);
 
 }  // namespace render

@@ -13,6 +13,11 @@ layout(set = 0, binding = BINDING_VERTICES, std430) readonly buffer VertexBlock 
 layout(set = 0, binding = BINDING_INDICES, std430) readonly buffer IndexBlock { uint indices[]; };
 layout(set = 0, binding = BINDING_COUNTERS, std430) buffer CounterBlock {
   FrameCounters counterSlots[COUNTER_SLOTS];
+  ProbeResults probeResults;
+};
+layout(set = 0, binding = BINDING_PROBE_SETUP, std430) readonly buffer ProbeSetupBlock {
+  ProbeSetup probeSetup;
+  ProbePoint probePoints[];
 };
 layout(set = 0, binding = BINDING_TEXTURES) uniform sampler2D textures[];
 layout(set = 0, binding = BINDING_PATHS, std430) writeonly buffer PathBlock { PixelPath paths[]; };

@@ -39,6 +39,7 @@ using uint = uint32_t;
 #define BINDING_FILTER_A 22      // rgba16f: rgb visibility, a variance (ping)
 #define BINDING_FILTER_B 23      // (pong)
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
+#define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -118,6 +119,31 @@ struct FrameCounters {
   uint secondaryRays;  // shadow rays and glass rays
   uint reserved0;
   uint reserved1;
+};
+
+// Probes: what the game's rules read back each probe frame (see game/probes.hpp).
+#define MAX_FOCUS_PROBES 16
+#define MAX_EXPOSURE_PROBES 16
+#define EXPOSURE_SAMPLES 64  // sample points per exposure probe (one shadow ray each)
+#define EXPOSURE_ONE 1024u   // fixed point: what one fully lit sample adds
+
+struct ProbeSetup {
+  uvec4 counts;  // x: focus probes, y: exposure probes
+  // x: instance, y: region's first pixel (x | y << 16), z: one past its last (same packing)
+  uvec4 focus[MAX_FOCUS_PROBES];
+  // x: light, y: sample points used (<= EXPOSURE_SAMPLES); points at [probe * SAMPLES]
+  uvec4 exposure[MAX_EXPOSURE_PROBES];
+};
+
+struct ProbePoint {
+  vec4 position;  // xyz: world position, already offset off the surface
+  vec4 normal;    // xyz: outward normal; w: 1 = the light must be on the normal's side
+};
+
+// Added into by the ray-gen shaders; integers, so sums do not depend on order.
+struct ProbeResults {
+  uint focusPixels[MAX_FOCUS_PROBES];  // region pixels whose path ended on the probe's instance
+  uint exposure[MAX_EXPOSURE_PROBES];  // sum over samples of visibility * EXPOSURE_ONE
 };
 
 struct PixelPath {

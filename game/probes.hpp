@@ -1,0 +1,44 @@
+#pragma once
+// The game's eyes: what the ray-gen shader measures for the rules, and the readings it returns.
+// The renderer fills ProbeReadings from its probe buffer; game/rules turns them into progress.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "game/level.hpp"
+
+namespace game {
+
+// A focus goal's probe: the share of the centred focus region whose final path reached the
+// entity (directly, through glass or via mirrors).
+struct FocusProbe {
+  uint32_t entity = 0;           // index into Level::entities
+  glm::vec2 region{0.2f, 0.2f};  // centred box, fractions of the screen width and height
+};
+
+// Exposure of a sensor entity (a lit goal) or of the player's body (stealth) to one light.
+struct ExposureProbe {
+  enum class Target { Entity, Player };
+  Target target = Target::Entity;
+  uint32_t entity = 0;  // Target::Entity: index into Level::entities
+  uint32_t light = 0;   // index into Level::lights
+};
+
+// Every probe a level needs, in a fixed order: focus goals and lit goals in the order they
+// appear in the goal tree (depth first), then stealth lose conditions in file order.
+struct ProbeLayout {
+  std::vector<FocusProbe> focus;
+  std::vector<ExposureProbe> exposure;
+};
+ProbeLayout probeLayout(const Level& level);
+
+// One probe frame's results, parallel to ProbeLayout's vectors.
+struct ProbeReadings {
+  uint64_t tick = 0;                 // the simulation tick whose world state was rendered
+  std::vector<float> focusCoverage;  // [0, 1]: covered pixels / focus-region pixels
+  std::vector<float> exposure;       // [0, 1]: share of sample points on the target that see
+                                     // the light (area lights: over points on the light)
+};
+
+}  // namespace game

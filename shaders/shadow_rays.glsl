@@ -1,0 +1,36 @@
+// Shadow rays and the glass rays that tint them; shared by the camera and probe ray-gen
+// shaders. Needs HAS_GLASS defined and the scene bindings.
+layout(location = PAYLOAD_SHADOW) rayPayloadEXT float visibility;
+#if HAS_GLASS
+layout(location = PAYLOAD_GLASS) rayPayloadEXT GlassPath glass;
+#endif
+
+uint raysTraced = 0u;
+
+// Transmittance of the glass between origin and origin + direction * tMax.
+vec3 glassTransmittance(vec3 origin, vec3 direction, float tMax, uint mask) {
+#if HAS_GLASS
+  glass.opticalDepth = uvec3(0u);
+  glass.rememberedCount = 0u;
+  traceRayEXT(sceneTlas, gl_RayFlagsSkipClosestHitShaderEXT, mask, 0, 1, MISS_GLASS, origin, 0.0,
+              direction, tMax, PAYLOAD_GLASS);
+  ++raysTraced;
+  return exp2(-vec3(glass.opticalDepth) / OPTICAL_DEPTH_SCALE);
+#else
+  return vec3(1.0);
+#endif
+}
+
+// How much of a light gets from `origin` along `toLight`: 0 behind an opaque caster, else the
+// transmittance of the glass in between.
+vec3 shadowTransmittance(vec3 origin, vec3 toLight, float distanceToLight) {
+  visibility = 0.0;
+  traceRayEXT(sceneTlas,
+              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT |
+                  gl_RayFlagsSkipClosestHitShaderEXT,
+              MASK_SHADOW_CASTER, 0, 1, MISS_SHADOW, origin, 0.0, toLight, distanceToLight,
+              PAYLOAD_SHADOW);
+  ++raysTraced;
+  if (visibility == 0.0) return vec3(0.0);
+  return glassTransmittance(origin, toLight, distanceToLight, MASK_GLASS_SHADOW);
+}
