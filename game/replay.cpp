@@ -184,11 +184,11 @@ class ReplayParser {
       const Json& outcome = expect["outcome"];
       const std::string word = outcome.is_string() ? outcome.get<std::string>() : "";
       if (word == "won")
-        replay.outcome.outcome = Outcome::Won;
+        replay.outcome.outcome = ReplayOutcome::Won;
       else if (word == "lost")
-        replay.outcome.outcome = Outcome::Lost;
+        replay.outcome.outcome = ReplayOutcome::Lost;
       else if (word == "none")
-        replay.outcome.outcome = Outcome::Playing;
+        replay.outcome.outcome = ReplayOutcome::Playing;
       else
         fail("/expect/outcome",
              "expected one of \"won\", \"lost\", \"none\", got " + outcome.dump());
@@ -284,13 +284,13 @@ class ReplayParser {
 
 }  // namespace
 
-const char* outcomeName(Outcome outcome) {
+const char* outcomeName(ReplayOutcome outcome) {
   switch (outcome) {
-    case Outcome::Won:
+    case ReplayOutcome::Won:
       return "won";
-    case Outcome::Lost:
+    case ReplayOutcome::Lost:
       return "lost";
-    case Outcome::Playing:
+    case ReplayOutcome::Playing:
       break;
   }
   return "none";
@@ -348,7 +348,7 @@ std::string replayToJson(const Replay& replay) {
   root["input"] = input;
   Json expect;
   expect["outcome"] = outcomeName(replay.outcome.outcome);
-  if (replay.outcome.outcome != Outcome::Playing)
+  if (replay.outcome.outcome != ReplayOutcome::Playing)
     expect["between"] = {replay.outcome.firstTick, replay.outcome.lastTick};
   root["expect"] = expect;
   return root.dump(2) + "\n";

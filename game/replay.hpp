@@ -38,12 +38,12 @@ struct InputEvent {
   float adjust = 0.0f;
 };
 
-enum class Outcome { Playing, Won, Lost };
-const char* outcomeName(Outcome outcome);  // "none", "won", "lost"
+enum class ReplayOutcome { Playing, Won, Lost };
+const char* outcomeName(ReplayOutcome outcome);  // "none", "won", "lost"
 
 struct OutcomeExpectation {
-  Outcome outcome = Outcome::Playing;    // Playing: neither won nor lost by the end
-  uint64_t firstTick = 0, lastTick = 0;  // inclusive; only for won and lost
+  ReplayOutcome outcome = ReplayOutcome::Playing;  // Playing: neither won nor lost by the end
+  uint64_t firstTick = 0, lastTick = 0;            // inclusive; only for won and lost
 };
 
 // A probe reading or a goal's progress at a tick must lie in [min, max].

@@ -18,6 +18,7 @@
 #include "game/gltf_mesh.hpp"
 #include "game/level_loader.hpp"
 #include "game/primitives.hpp"
+#include "temp_dir_fixture.hpp"
 
 namespace {
 
@@ -28,10 +29,7 @@ const fs::path kAssets = fs::path(SIGHTLINE_SOURCE_DIR) / "assets";
 
 constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123;
 
-void writeFile(const fs::path& path, const std::string& contents) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path, std::ios::binary) << contents;
-}
+using test::writeFile;
 
 std::string readFile(const fs::path& path) {
   std::ifstream stream(path, std::ios::binary);
@@ -136,19 +134,8 @@ struct GltfBuilder {
 
 const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
-class GltfModelTest : public ::testing::Test {
+class GltfModelTest : public test::TempDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / ("sightline-gltf-" + std::string(info->name()) + "-" +
-                                         std::to_string(std::random_device{}()));
-    fs::create_directories(root_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-
   // The message loadGltfModel throws, or a note that it threw nothing.
   std::string loadError(const fs::path& file, const game::GltfSelection& selection = {}) const {
     try {
@@ -158,8 +145,6 @@ class GltfModelTest : public ::testing::Test {
     }
     return "(no error)";
   }
-
-  fs::path root_;
 };
 
 std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {

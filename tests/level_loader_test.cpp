@@ -16,6 +16,7 @@
 #include "game/level_loader.hpp"
 #include "game/primitives.hpp"
 #include "render/color.hpp"
+#include "temp_dir_fixture.hpp"
 
 namespace {
 
@@ -60,26 +61,10 @@ std::string loadError(const fs::path& file, const game::LevelLoadOptions& option
   return "(no error)";
 }
 
-void writeFile(const fs::path& path, const std::string& contents) {
-  fs::create_directories(path.parent_path());
-  std::ofstream(path, std::ios::binary) << contents;
-}
+using test::writeFile;
 
 // A fresh directory per test, removed afterwards.
-class TempDirTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / ("sightline-" + std::string(info->name()) + "-" +
-                                         std::to_string(std::random_device{}()));
-    fs::create_directories(root_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-  fs::path root_;
-};
+using test::TempDirTest;
 
 // ----- glTF writing helpers -----
 

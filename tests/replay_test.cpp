@@ -46,7 +46,7 @@ TEST(Replay, parses_every_field) {
   EXPECT_EQ(replay.probeLatency, 2u);
   EXPECT_EQ(replay.ticks, 300u);
   ASSERT_EQ(replay.events.size(), 3u);
-  EXPECT_EQ(replay.outcome.outcome, game::Outcome::Won);
+  EXPECT_EQ(replay.outcome.outcome, game::ReplayOutcome::Won);
   EXPECT_EQ(replay.outcome.firstTick, 120u);
   EXPECT_EQ(replay.outcome.lastTick, 200u);
   ASSERT_EQ(replay.values.size(), 1u);
@@ -74,7 +74,7 @@ TEST(Replay, round_trips_through_json) {
   EXPECT_EQ(again.level, replay.level);
   for (uint64_t tick = 0; tick < replay.ticks; ++tick)
     EXPECT_EQ(again.inputAt(tick), replay.inputAt(tick)) << "tick " << tick;
-  EXPECT_EQ(again.outcome.outcome, game::Outcome::Won);
+  EXPECT_EQ(again.outcome.outcome, game::ReplayOutcome::Won);
 }
 
 TEST(Replay, bad_input_gets_one_message_with_file_line_and_column) {

@@ -13,6 +13,7 @@
 
 #include "game/level_loader.hpp"
 #include "game/texture_file.hpp"
+#include "temp_dir_fixture.hpp"
 
 namespace {
 
@@ -79,20 +80,7 @@ std::vector<uint8_t> pngHeaderOnly(uint32_t width, uint32_t height) {
   return png;
 }
 
-class TextureFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / ("sightline-texture-" + std::string(info->name()) + "-" +
-                                         std::to_string(std::random_device{}()));
-    fs::create_directories(root_);
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-  fs::path root_;
-};
+class TextureFileTest : public test::TempDirTest {};
 
 TEST(TextureFile, crate_colour_png_decodes_to_exact_rgba8) {
   const fs::path file = kAssets / "crate_color.png";
