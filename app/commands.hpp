@@ -12,5 +12,6 @@ int commandBenchQuality(const Options& options);
 int commandValidate(const Options& options);
 int commandInfo(const Options& options);
 int commandDevices();
+int commandReplay(const Options& options);
 
 }  // namespace app

@@ -5,6 +5,7 @@
 #include "app/commands.hpp"
 #include "app/options.hpp"
 #include "game/level_loader.hpp"
+#include "game/replay.hpp"
 #include "render/shader_compiler.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +19,7 @@ int main(int argc, char** argv) {
     if (options.command == "preview") return app::commandPreview(options);
     if (options.command == "info") return app::commandInfo(options);
     if (options.command == "bench-quality") return app::commandBenchQuality(options);
+    if (options.command == "replay") return app::commandReplay(options);
     if (options.command == "help" || options.command == "--help" || options.command == "-h") {
       std::fputs(app::kUsage, stdout);
       return 0;
@@ -26,6 +28,9 @@ int main(int argc, char** argv) {
   } catch (const app::UsageError& error) {
     std::fprintf(stderr, "sightline: %s\n\n%s", error.what(), app::kUsage);
     return 2;
+  } catch (const game::ReplayError& error) {
+    std::fprintf(stderr, "%s\n", error.what());
+    return 1;
   } catch (const game::LevelError& error) {
     std::fprintf(stderr, "%s\n", error.what());
     return 1;

@@ -18,6 +18,8 @@ commands:
   validate <level.json...>     check levels and report the first error in each
   info <level.json>            triangles, instances, lights and the features a level uses
   devices                      list Vulkan devices and whether they can run Sightline
+  replay <replay.json...>      run replays headless and check their expectations (exit 0
+                               when all hold); --trace FILE.csv for the per-tick values
 
 options:
   --size WxH          image size (render: 320x180)
@@ -32,6 +34,7 @@ options:
   --spp N             samples per pixel for --reference (default 256)
   --watch             preview: keep running and re-render on every save
   --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
+  --trace FILE.csv    replay: write each tick's probe values, goal progress and player state
 )";
 
 namespace {
@@ -103,6 +106,8 @@ Options parseOptions(int argc, char** argv) {
       options.watch = true;
     } else if (argument == "--watch-limit") {
       options.watchLimit = parseCount("--watch-limit", value(), 1, 1000000);
+    } else if (argument == "--trace") {
+      options.trace = value();
     } else if (argument == "--help" || argument == "-h") {
       options.command = "help";
     } else if (!argument.empty() && argument[0] == '-') {

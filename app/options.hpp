@@ -33,7 +33,8 @@ struct Options {
   bool watch = false;
   bool reference = false;  // render: accumulate raw soft-shadow samples, no denoiser
   uint32_t samplesPerPixel = 256;
-  uint32_t watchLimit = 0;  // 0: no limit
+  uint32_t watchLimit = 0;                     // 0: no limit
+  std::optional<std::filesystem::path> trace;  // replay: per-tick CSV of probes and player
 };
 
 // Throws UsageError naming the option and what was expected.

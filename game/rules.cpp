@@ -1,0 +1,193 @@
+#include "game/rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "game/world.hpp"
+
+namespace game {
+
+namespace {
+
+uint32_t ticksFor(float seconds) {
+  const double ticks = std::ceil(double(seconds) * 60.0 - 1e-4);
+  return uint32_t(std::max(1.0, ticks));
+}
+
+std::string number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+std::string quoted(const std::string& id, uint32_t index) {
+  return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
+}
+
+std::string entityName(const Level& level, uint32_t entity) {
+  return quoted(entity < level.entities.size() ? level.entities[entity].id : "", entity);
+}
+
+std::string lightName(const Level& level, uint32_t light) {
+  return quoted(light < level.lightIds.size() ? level.lightIds[light] : "", light);
+}
+
+}  // namespace
+
+const char* outcomeName(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::Playing:
+      return "playing";
+    case Outcome::Won:
+      return "won";
+    case Outcome::Lost:
+      return "lost";
+  }
+  return "?";
+}
+
+Rules::Rules(const Level& level, const ProbeLayout& layout) {
+  uint32_t focusCount = 0, exposureCount = 0;
+  if (level.goal) addNode(*level.goal, level, focusCount, exposureCount);
+  for (const LoseCondition& condition : level.lose) {
+    Loss loss{condition, lightName(level, condition.light)};
+    if (condition.type == LoseCondition::Type::Stealth) {
+      loss.probe = int32_t(exposureCount++);
+      loss.needTicks = ticksFor(condition.seconds);
+    }
+    losses_.push_back(std::move(loss));
+  }
+  if (focusCount != layout.focus.size() || exposureCount != layout.exposure.size())
+    throw std::invalid_argument("Rules: the probe layout does not match the level's goals");
+  coverage_.assign(focusCount, 0.0f);
+  exposure_.assign(exposureCount, 0.0f);
+}
+
+// Same depth-first order as probeLayout, so probe indices line up.
+uint32_t Rules::addNode(const Goal& goal, const Level& level, uint32_t& focusCount,
+                        uint32_t& exposureCount) {
+  const uint32_t index = uint32_t(nodes_.size());
+  nodes_.emplace_back();
+  progress_.emplace_back();
+  Node node;
+  node.goal = goal;
+  node.goal.children.clear();
+  std::string label;
+  switch (goal.type) {
+    case Goal::Type::Focus:
+      node.probe = int32_t(focusCount++);
+      label = "focus on " + entityName(level, goal.entity);
+      break;
+    case Goal::Type::Lit:
+      node.probe = int32_t(exposureCount++);
+      node.needTicks = ticksFor(goal.holdSeconds);
+      label = "light " + entityName(level, goal.entity) + " with " + lightName(level, goal.light);
+      break;
+    case Goal::Type::Reach: {
+      const glm::vec3 centre = 0.5f * (goal.min + goal.max);
+      label =
+          "reach (" + number(centre.x) + ", " + number(centre.y) + ", " + number(centre.z) + ")";
+      break;
+    }
+    case Goal::Type::All:
+    case Goal::Type::Any:
+      label = std::string(goal.type == Goal::Type::All ? "all" : "any") + " of " +
+              std::to_string(goal.children.size());
+      for (const Goal& child : goal.children)
+        node.children.push_back(addNode(child, level, focusCount, exposureCount));
+      break;
+  }
+  nodes_[index] = std::move(node);
+  progress_[index].label = std::move(label);
+  return index;
+}
+
+// Evaluates every node once per tick (no short cut: focus and lit goals keep counting).
+bool Rules::evaluate(uint32_t index, const glm::vec3& feet) {
+  Node& node = nodes_[index];
+  const Goal& goal = node.goal;
+  float progress = 0.0f;
+  bool met = false;
+  switch (goal.type) {
+    case Goal::Type::Focus: {
+      const bool covered = coverage_[uint32_t(node.probe)] >= goal.coverage;
+      node.score += (covered ? goal.risePerSecond : -goal.fallPerSecond) * TICK_SECONDS;
+      node.score = std::clamp(node.score, 0.0, 1.0);
+      if (node.score >= 1.0 - 1e-9) node.score = 1.0;
+      progress = float(node.score);
+      met = node.score == 1.0;
+      break;
+    }
+    case Goal::Type::Lit:
+      node.runTicks = exposure_[uint32_t(node.probe)] >= goal.threshold ? node.runTicks + 1 : 0;
+      progress = std::min(1.0f, float(node.runTicks) / float(node.needTicks));
+      met = node.runTicks >= node.needTicks;
+      break;
+    case Goal::Type::Reach:
+      met = glm::all(glm::greaterThanEqual(feet, goal.min)) &&
+            glm::all(glm::lessThanEqual(feet, goal.max));
+      progress = met ? 1.0f : 0.0f;
+      break;
+    case Goal::Type::All:
+    case Goal::Type::Any: {
+      const bool all = goal.type == Goal::Type::All;
+      met = all;
+      float sum = 0.0f, best = 0.0f;
+      for (uint32_t child : nodes_[index].children) {
+        const bool childMet = evaluate(child, feet);
+        met = all ? (met && childMet) : (met || childMet);
+        sum += progress_[child].progress;
+        best = std::max(best, progress_[child].progress);
+      }
+      const size_t count = nodes_[index].children.size();
+      progress = all ? (count ? sum / float(count) : 1.0f) : best;
+      break;
+    }
+  }
+  progress_[index].progress = progress;
+  progress_[index].met = met;
+  return met;
+}
+
+void Rules::update(uint64_t tick, const World& world, const ProbeReadings* latest) {
+  if (outcome_ != Outcome::Playing) return;
+  if (latest) {
+    std::copy_n(latest->focusCoverage.begin(),
+                std::min(latest->focusCoverage.size(), coverage_.size()), coverage_.begin());
+    std::copy_n(latest->exposure.begin(), std::min(latest->exposure.size(), exposure_.size()),
+                exposure_.begin());
+  }
+  const glm::vec3 feet = world.feetPosition();
+
+  std::string lostReason;
+  for (Loss& loss : losses_) {
+    bool triggered = false;
+    std::string why;
+    if (loss.condition.type == LoseCondition::Type::Stealth) {
+      const bool seen = exposure_[uint32_t(loss.probe)] > loss.condition.exposureLimit;
+      loss.runTicks = seen ? loss.runTicks + 1 : 0;
+      triggered = loss.runTicks >= loss.needTicks;
+      why = "seen by " + loss.watcher + " for " + number(loss.condition.seconds) + " s";
+    } else {
+      triggered = feet.y < loss.condition.below;
+      why = "fell below " + number(loss.condition.below) + " m";
+    }
+    if (triggered && lostReason.empty()) lostReason = why;  // the first in file order
+  }
+  const bool won = !nodes_.empty() && evaluate(0, feet);
+
+  if (!lostReason.empty()) {
+    outcome_ = Outcome::Lost;
+    reason_ = lostReason;
+  } else if (won) {
+    outcome_ = Outcome::Won;
+    reason_ = progress_[0].label + ": met";
+  } else {
+    return;
+  }
+  outcomeTick_ = tick;
+}
+
+}  // namespace game

@@ -1,0 +1,134 @@
+#include "sim/simulation.hpp"
+
+#include "render/context.hpp"
+#include "render/shader_compiler.hpp"
+
+namespace sim {
+namespace {
+
+// Candidate points on a sensor; those facing the light are traced (at most EXPOSURE_SAMPLES).
+constexpr uint32_t kSensorSamples = 64;
+constexpr uint64_t kUnfiltered = ~uint64_t(0);
+
+render::RendererOptions rendererOptions(const SimulationOptions& options) {
+  render::RendererOptions result;
+  result.width = options.width;
+  result.height = options.height;
+  return result;
+}
+
+render::SceneDesc sceneFor(const game::Level& level, const game::ProbeLayout& layout) {
+  render::SceneDesc scene = game::buildSceneDesc(level);
+  scene.exposureProbes = !layout.exposure.empty();
+  return scene;
+}
+
+}  // namespace
+
+Simulation::Simulation(const render::Context& context, render::ShaderCompiler& compiler,
+                       const game::Level& level, const SimulationOptions& options)
+    : level_(level),
+      options_(options),
+      world_(level),
+      layout_(game::probeLayout(level)),
+      rules_(level, layout_),
+      renderer_(std::make_unique<render::Renderer>(context, compiler, sceneFor(level, layout_),
+                                                   rendererOptions(options))) {
+  for (const game::ExposureProbe& probe : layout_.exposure) {
+    sensorSamples_.push_back(
+        probe.target == game::ExposureProbe::Target::Entity
+            ? game::surfaceSamples(level.meshes[level.entities[probe.entity].mesh], kSensorSamples)
+            : std::vector<game::SurfaceSample>{});
+  }
+  for (const render::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  // Probe frame 0 shows the world before the first tick.
+  syncRenderer();
+  inFlight_.push_back(renderProbeFrame());
+}
+
+game::Outcome Simulation::outcome() const {
+  return rules_.outcome();
+}
+
+void Simulation::syncRenderer() {
+  if (!world_.changedEntities().empty()) {
+    std::vector<glm::mat4> transforms;
+    for (size_t i = 0; i < level_.entities.size(); ++i)
+      transforms.push_back(world_.entityTransform(uint32_t(i)));
+    renderer_->setInstanceTransforms(transforms);
+  }
+  for (uint32_t light = 0; light < lightStates_.size(); ++light) {
+    const bool enabled = world_.lightEnabled(light);
+    if (enabled == lightStates_[light]) continue;
+    lightStates_[light] = enabled;
+    renderer_->setLightEnabled(light, enabled);
+  }
+}
+
+game::ProbeReadings Simulation::renderProbeFrame() {
+  render::ProbeRequest request;
+  for (const game::FocusProbe& focus : layout_.focus)
+    request.focus.push_back({focus.entity, focus.region});
+  for (size_t i = 0; i < layout_.exposure.size(); ++i) {
+    const game::ExposureProbe& probe = layout_.exposure[i];
+    const render::LightDesc& light = level_.lights[probe.light];
+    render::ExposureProbeDesc desc;
+    desc.light = probe.light;
+    desc.points = probe.target == game::ExposureProbe::Target::Entity
+                      ? game::sensorExposurePoints(sensorSamples_[i],
+                                                   world_.entityTransform(probe.entity), light)
+                      : game::playerExposurePoints(world_.feetPosition(), light);
+    request.exposure.push_back(std::move(desc));
+  }
+  renderer_->setProbes(request);
+  render::FrameDesc frame;
+  frame.camera = world_.camera();
+  frame.frameIndex = frameIndex_++;
+  renderer_->renderFrame(frame, false);
+  const render::ProbeCounts& counts = renderer_->probeCounts();
+  game::ProbeReadings readings;
+  readings.tick = world_.tick();
+  for (size_t i = 0; i < layout_.focus.size(); ++i)
+    readings.focusCoverage.push_back(counts.focusCoverage(i));
+  // Exposure is filtered over probe frames in 16.16 fixed point, halving the step each frame:
+  // exact, order-free integer arithmetic, so replays agree on every machine.
+  exposureFiltered_.resize(layout_.exposure.size(), kUnfiltered);
+  for (size_t i = 0; i < layout_.exposure.size(); ++i) {
+    const uint64_t points = counts.exposurePoints[i];
+    const uint64_t current =
+        points ? (uint64_t(counts.exposureFixed[i]) << 16) / (points * counts.exposureOne) : 0;
+    uint64_t& filtered = exposureFiltered_[i];
+    filtered = filtered == kUnfiltered ? current : (filtered + current) / 2;
+    readings.exposure.push_back(float(filtered) / 65536.0f);
+  }
+  ++probeFrames_;
+  return readings;
+}
+
+void Simulation::step(const game::TickInput& input) {
+  world_.step(input);
+  const uint64_t now = world_.tick();
+  const uint64_t k = options_.probeEveryTicks;
+  if (now % k == 0) {
+    syncRenderer();
+    inFlight_.push_back(renderProbeFrame());
+  }
+  arrivedThisTick_ = false;
+  if (!inFlight_.empty() && inFlight_.front().tick + options_.probeLatency * k <= now) {
+    latest_ = std::move(inFlight_.front());
+    inFlight_.pop_front();
+    arrivedThisTick_ = true;
+  }
+  rules_.update(now, world_, arrivedThisTick_ ? &*latest_ : nullptr);
+}
+
+const std::vector<uint8_t>& Simulation::renderPicture() {
+  syncRenderer();
+  render::FrameDesc frame;
+  frame.camera = world_.camera();
+  frame.frameIndex = frameIndex_++;
+  renderer_->renderFrame(frame, true);
+  return renderer_->pixels();
+}
+
+}  // namespace sim

@@ -1,0 +1,82 @@
+#pragma once
+// The game running: the fixed-tick world and rules, fed by probe frames from the renderer.
+//
+// Probe cadence (the same in play and headless): after every tick t with t % k == 0 a probe
+// frame renders the world as it is after tick t; its readings reach the rules at tick
+// t + L * k, after that tick's world step (k = probe_every_ticks, L = probe_latency in probe
+// frames). Play, which has frames in flight, waits for a readback when the rules need it, so a
+// slow machine runs slower but never differently. Exposure readings are filtered over probe
+// frames (each new frame moves the reading halfway, in fixed point); focus readings are not.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "game/level.hpp"
+#include "game/probe_points.hpp"
+#include "game/probes.hpp"
+#include "game/replay.hpp"
+#include "game/rules.hpp"
+#include "game/world.hpp"
+#include "render/renderer.hpp"
+
+namespace render {
+class Context;
+class ShaderCompiler;
+}  // namespace render
+
+namespace sim {
+
+struct SimulationOptions {
+  uint32_t width = 64;
+  uint32_t height = 36;
+  uint32_t probeEveryTicks = 4;  // k
+  uint32_t probeLatency = 2;     // L, in probe frames
+};
+
+class Simulation {
+ public:
+  Simulation(const render::Context& context, render::ShaderCompiler& compiler,
+             const game::Level& level, const SimulationOptions& options);
+
+  // One fixed tick (1/60 s).
+  void step(const game::TickInput& input);
+
+  uint64_t tick() const { return world_.tick(); }
+  game::Outcome outcome() const;
+  const game::World& world() const { return world_; }
+  const game::Rules& rules() const { return rules_; }
+  const game::ProbeLayout& layout() const { return layout_; }
+  // The newest readings the rules have, and whether they arrived on this tick.
+  const std::optional<game::ProbeReadings>& latestReadings() const { return latest_; }
+  bool readingsArrivedThisTick() const { return arrivedThisTick_; }
+  // Probe frames rendered so far.
+  uint64_t probeFrames() const { return probeFrames_; }
+
+  // Renders the current state as a picture (denoised, with readback), outside the probe
+  // cadence; probes are unaffected. Returns RGBA8 rows top to bottom.
+  const std::vector<uint8_t>& renderPicture();
+  render::Renderer& renderer() { return *renderer_; }
+
+ private:
+  void syncRenderer();
+  game::ProbeReadings renderProbeFrame();
+
+  const game::Level& level_;
+  SimulationOptions options_;
+  game::World world_;
+  game::ProbeLayout layout_;
+  game::Rules rules_;
+  std::unique_ptr<render::Renderer> renderer_;
+  std::vector<std::vector<game::SurfaceSample>> sensorSamples_;  // per exposure probe
+  std::vector<bool> lightStates_;
+  std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
+  std::deque<game::ProbeReadings> inFlight_;
+  std::optional<game::ProbeReadings> latest_;
+  bool arrivedThisTick_ = false;
+  uint64_t probeFrames_ = 0;
+  uint32_t frameIndex_ = 0;
+};
+
+}  // namespace sim
