@@ -44,6 +44,10 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
   // Probe frame 0 shows the world before the first tick.
   syncRenderer();
   inFlight_.push_back(renderProbeFrame());
+  if (options_.probeLatency == 0) {  // due at tick 0 itself: the rules start with it
+    latest_ = std::move(inFlight_.front());
+    inFlight_.pop_front();
+  }
 }
 
 game::Outcome Simulation::outcome() const {
@@ -114,7 +118,7 @@ void Simulation::step(const game::TickInput& input) {
     inFlight_.push_back(renderProbeFrame());
   }
   arrivedThisTick_ = false;
-  if (!inFlight_.empty() && inFlight_.front().tick + options_.probeLatency * k <= now) {
+  if (!inFlight_.empty() && inFlight_.front().tick + options_.probeLatency * k == now) {
     latest_ = std::move(inFlight_.front());
     inFlight_.pop_front();
     arrivedThisTick_ = true;
