@@ -3,6 +3,7 @@
 // capsule contacts (the player). Pure CPU, deterministic.
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
