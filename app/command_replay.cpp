@@ -106,9 +106,18 @@ class TraceWriter {
   std::ofstream out_;
 };
 
+// The replay's level, or a ReplayError that names where the replay names it.
+game::Level loadReplayLevel(const game::Replay& replay) {
+  try {
+    return game::loadLevel(replay.level);
+  } catch (const game::LevelError& error) {
+    throw game::ReplayError(replay.levelPlace + ": level: " + error.what());
+  }
+}
+
 ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& compiler,
                        const game::Replay& replay, const Options& options) {
-  const game::Level level = game::loadLevel(replay.level);
+  const game::Level level = loadReplayLevel(replay);
   sim::Simulation simulation(
       context, compiler, level,
       {replay.width, replay.height, replay.probeEveryTicks, replay.probeLatency});
@@ -213,7 +222,10 @@ int commandReplay(const Options& options) {
     throw UsageError("replay: --trace takes exactly one replay file");
   // Every file is read and checked before anything runs.
   std::vector<game::Replay> replays;
-  for (const std::string& file : options.positional) replays.push_back(game::loadReplay(file));
+  for (const std::string& file : options.positional) {
+    replays.push_back(game::loadReplay(file));
+    loadReplayLevel(replays.back());
+  }
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   int failed = 0;

@@ -47,6 +47,9 @@ class ReplayParser {
     require(root, "", "level");
     if (!root["level"].is_string()) fail("/level", "expected a path to a level file");
     replay.level = (file_.parent_path() / root["level"].get<std::string>()).lexically_normal();
+    const SourcePosition levelAt = positions_.valueAt("/level");
+    replay.levelPlace =
+        file_.string() + ":" + std::to_string(levelAt.line) + ":" + std::to_string(levelAt.column);
     if (root.contains("size")) {
       const Json& size = root["size"];
       if (!size.is_array() || size.size() != 2) fail("/size", "expected [width, height]");

@@ -73,6 +73,7 @@ struct ImageCheckpoint {
 struct Replay {
   std::filesystem::path file;
   std::filesystem::path level;  // resolved against the replay's directory
+  std::string levelPlace;       // "file:line:col" of the level path, for errors about it
   uint32_t width = 64, height = 36;
   uint32_t seed = 0;
   uint32_t probeEveryTicks = 4;    // k: a probe frame after every k-th tick

@@ -125,11 +125,18 @@ bool Rules::evaluate(uint32_t index, const glm::vec3& feet) {
       progress = std::min(1.0f, float(node.runTicks) / float(node.needTicks));
       met = node.runTicks >= node.needTicks;
       break;
-    case Goal::Type::Reach:
+    case Goal::Type::Reach: {
       met = glm::all(glm::greaterThanEqual(feet, goal.min)) &&
             glm::all(glm::lessThanEqual(feet, goal.max));
-      progress = met ? 1.0f : 0.0f;
+      // How much of the way from where the player first stood has been covered.
+      const float distance = glm::distance(feet, glm::clamp(feet, goal.min, goal.max));
+      if (node.startDistance < 0.0f) node.startDistance = distance;
+      progress = met ? 1.0f
+                 : node.startDistance > 0.0f
+                     ? std::clamp(1.0f - distance / node.startDistance, 0.0f, 1.0f)
+                     : 0.0f;
       break;
+    }
     case Goal::Type::All:
     case Goal::Type::Any: {
       const bool all = goal.type == Goal::Type::All;

@@ -8,7 +8,8 @@
 //   orb lowers the score and unmeets it. Only the level outcome latches.
 // - Lit: met on every tick that ends a run of max(1, ceil(hold_seconds × 60)) consecutive ticks
 //   with exposure ≥ threshold.
-// - Reach: met while the player's feet are inside [min, max] (inclusive).
+// - Reach: met while the player's feet are inside [min, max] (inclusive); its progress is the
+//   share of the distance to the box covered since the first update.
 // - All / Any: every / at least one child met on the same tick.
 // - Stealth: lost on the tick that ends a run of max(1, ceil(seconds × 60)) consecutive ticks with
 //   exposure > exposure_limit. Fall: lost on the first tick with feet y < below.
@@ -57,10 +58,11 @@ class Rules {
   struct Node {
     Goal goal;  // children are ignored here; see `children`
     std::vector<uint32_t> children;
-    int32_t probe = -1;      // Focus: focus index; Lit: exposure index
-    uint32_t needTicks = 0;  // Lit
-    double score = 0.0;      // Focus
-    uint32_t runTicks = 0;   // Lit
+    int32_t probe = -1;           // Focus: focus index; Lit: exposure index
+    uint32_t needTicks = 0;       // Lit
+    double score = 0.0;           // Focus
+    uint32_t runTicks = 0;        // Lit
+    float startDistance = -1.0f;  // Reach: metres from the box at the first update
   };
   struct Loss {
     LoseCondition condition;

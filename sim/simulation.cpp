@@ -41,6 +41,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
             : std::vector<game::SurfaceSample>{});
   }
   for (const render::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  transformsChanged_ = !world_.changedEntities().empty();
   // Probe frame 0 shows the world before the first tick.
   syncRenderer();
   inFlight_.push_back(renderProbeFrame());
@@ -55,7 +56,8 @@ game::Outcome Simulation::outcome() const {
 }
 
 void Simulation::syncRenderer() {
-  if (!world_.changedEntities().empty()) {
+  if (transformsChanged_) {
+    transformsChanged_ = false;
     std::vector<glm::mat4> transforms;
     for (size_t i = 0; i < level_.entities.size(); ++i)
       transforms.push_back(world_.entityTransform(uint32_t(i)));
@@ -111,6 +113,8 @@ game::ProbeReadings Simulation::renderProbeFrame() {
 
 void Simulation::step(const game::TickInput& input) {
   world_.step(input);
+  // Changes between probe frames count too: the next frame shows where everything is now.
+  transformsChanged_ = transformsChanged_ || !world_.changedEntities().empty();
   const uint64_t now = world_.tick();
   const uint64_t k = options_.probeEveryTicks;
   if (now % k == 0) {

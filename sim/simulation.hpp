@@ -71,6 +71,7 @@ class Simulation {
   std::unique_ptr<render::Renderer> renderer_;
   std::vector<std::vector<game::SurfaceSample>> sensorSamples_;  // per exposure probe
   std::vector<bool> lightStates_;
+  bool transformsChanged_ = false;          // since the renderer last got the entities' transforms
   std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
   std::deque<game::ProbeReadings> inFlight_;
   std::optional<game::ProbeReadings> latest_;

@@ -171,6 +171,25 @@ TEST(Rules, ReachNeedsTheFeetInsideTheBox) {
   EXPECT_FALSE(outside.rules.progress()[0].met);
 }
 
+TEST(Rules, ReachProgressIsTheShareOfTheWayCovered) {
+  game::Level level = baseLevel();
+  level.goal = reach({-1, -1, -9}, {1, 1, -8});  // 8 m ahead of the player's feet
+  game::World world(level);
+  game::Rules rules(level, game::probeLayout(level));
+  game::TickInput forward;
+  forward.move = {0.0f, 1.0f};
+  const game::ProbeReadings none{};
+  world.step({});
+  rules.update(world.tick(), world, &none);
+  EXPECT_FLOAT_EQ(rules.progress()[0].progress, 0.0f);
+  for (int tick = 0; tick < 60; ++tick) {  // one second at 4 m/s: half the way
+    world.step(forward);
+    rules.update(world.tick(), world, &none);
+  }
+  EXPECT_NEAR(rules.progress()[0].progress, 0.5f, 0.01f);
+  EXPECT_EQ(rules.outcome(), Outcome::Playing);
+}
+
 TEST(Rules, StealthLosesAfterSecondsAboveTheLimit) {
   game::Level level = baseLevel();
   LoseCondition stealth{LoseCondition::Type::Stealth};
