@@ -157,10 +157,15 @@ ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& c
     for (const game::ImageCheckpoint& checkpoint : replay.images) {
       if (checkpoint.tick != tick) continue;
       const render::Rgba8Image actual{replay.width, replay.height, simulation.renderPicture()};
-      if (!fs::exists(checkpoint.png)) {
+      if (options.updateImages) {
+        fs::create_directories(checkpoint.png.parent_path());
         render::writePng(checkpoint.png, actual);
-        std::printf("  %s: wrote %s (it did not exist)\n", checkpoint.place.c_str(),
-                    checkpoint.png.c_str());
+        std::printf("  %s: wrote %s\n", checkpoint.place.c_str(), checkpoint.png.c_str());
+        continue;
+      }
+      if (!fs::exists(checkpoint.png)) {
+        fail(checkpoint.place + ": " + checkpoint.png.string() +
+             " does not exist; run with --update-images to store it");
         continue;
       }
       const render::ImageDifference difference =

@@ -35,6 +35,7 @@ options:
   --watch             preview: keep running and re-render on every save
   --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
   --trace FILE.csv    replay: write each tick's probe values, goal progress and player state
+  --update-images     replay: store the image checkpoints as rendered now
 )";
 
 namespace {
@@ -106,6 +107,8 @@ Options parseOptions(int argc, char** argv) {
       options.watch = true;
     } else if (argument == "--watch-limit") {
       options.watchLimit = parseCount("--watch-limit", value(), 1, 1000000);
+    } else if (argument == "--update-images") {
+      options.updateImages = true;
     } else if (argument == "--trace") {
       options.trace = value();
     } else if (argument == "--help" || argument == "-h") {

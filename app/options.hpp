@@ -35,6 +35,7 @@ struct Options {
   uint32_t samplesPerPixel = 256;
   uint32_t watchLimit = 0;                     // 0: no limit
   std::optional<std::filesystem::path> trace;  // replay: per-tick CSV of probes and player
+  bool updateImages = false;  // replay: write image checkpoints instead of comparing
 };
 
 // Throws UsageError naming the option and what was expected.

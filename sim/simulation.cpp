@@ -9,6 +9,7 @@ namespace {
 // Candidate points on a sensor; those facing the light are traced (at most EXPOSURE_SAMPLES).
 constexpr uint32_t kSensorSamples = 64;
 constexpr uint64_t kUnfiltered = ~uint64_t(0);
+constexpr uint32_t kPictureFrames = 1u << 30;  // first sequence index of pictures
 
 render::RendererOptions rendererOptions(const SimulationOptions& options) {
   render::RendererOptions result;
@@ -134,7 +135,8 @@ const std::vector<uint8_t>& Simulation::renderPicture() {
   syncRenderer();
   render::FrameDesc frame;
   frame.camera = world_.camera();
-  frame.frameIndex = frameIndex_++;
+  // Sample sequences of their own, so taking a picture changes no probe frame's samples.
+  frame.frameIndex = kPictureFrames + pictureFrames_++;
   renderer_->renderFrame(frame, true);
   return renderer_->pixels();
 }

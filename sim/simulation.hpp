@@ -77,7 +77,8 @@ class Simulation {
   std::optional<game::ProbeReadings> latest_;
   bool arrivedThisTick_ = false;
   uint64_t probeFrames_ = 0;
-  uint32_t frameIndex_ = 0;
+  uint32_t frameIndex_ = 0;  // probe frames' sample sequence index
+  uint32_t pictureFrames_ = 0;
 };
 
 }  // namespace sim
