@@ -314,6 +314,28 @@ TickInput Replay::inputAt(uint64_t tick) const {
   return input;
 }
 
+void appendTickInput(Replay& replay, const TickInput& input) {
+  const uint64_t tick = replay.ticks++;
+  const bool looking = input.yawDeltaDegrees != 0.0f || input.pitchDeltaDegrees != 0.0f;
+  if (input == TickInput{}) return;
+  if (!looking && !replay.events.empty()) {
+    InputEvent& last = replay.events.back();
+    const bool continues = last.tick + last.hold == tick && last.lookDegrees == glm::vec2(0.0f);
+    if (continues && replay.inputAt(last.tick) == input) {
+      ++last.hold;
+      return;
+    }
+  }
+  InputEvent event;
+  event.tick = tick;
+  event.move = input.move;
+  event.lookDegrees = {input.yawDeltaDegrees, input.pitchDeltaDegrees};
+  event.jump = input.jump;
+  event.interact = input.interact;
+  event.adjust = input.adjust;
+  replay.events.push_back(event);
+}
+
 Replay parseReplay(const std::string& text, const fs::path& file) {
   return ReplayParser(text, file).parse();
 }

@@ -88,6 +88,11 @@ struct Replay {
   TickInput inputAt(uint64_t tick) const;
 };
 
+// Recording: appends the input of the next tick (tick = replay.ticks, which grows by one).
+// Runs of identical input without look share one event; looking makes one event a tick, so
+// the recorded deltas come back exactly.
+void appendTickInput(Replay& replay, const TickInput& input);
+
 Replay loadReplay(const std::filesystem::path& file);
 Replay parseReplay(const std::string& text, const std::filesystem::path& file);
 // Writes a replay (input and outcome) as format-1 JSON; recording uses it.

@@ -77,6 +77,29 @@ TEST(Replay, round_trips_through_json) {
   EXPECT_EQ(again.outcome.outcome, game::ReplayOutcome::Won);
 }
 
+TEST(Replay, recorded_input_comes_back_exactly_tick_for_tick) {
+  game::Replay recording;
+  recording.file = "replays/recorded.json";
+  recording.level = "levels/01_first_light.json";
+  recording.ticks = 0;
+  std::vector<game::TickInput> played;
+  for (int tick = 0; tick < 300; ++tick) {
+    game::TickInput input;
+    if (tick < 100) input.move = {0.0f, 1.0f};  // held: one event
+    if (tick >= 120 && tick < 160) input.yawDeltaDegrees = 0.1f * float(tick % 7);  // mouse
+    if (tick == 200) input.jump = true;
+    if (tick >= 220 && tick < 260) input.interact = true, input.adjust = -1.0f;
+    played.push_back(input);
+    game::appendTickInput(recording, input);
+  }
+  EXPECT_EQ(recording.ticks, 300u);
+  EXPECT_LT(recording.events.size(), 50u);
+  const game::Replay loaded =
+      game::parseReplay(game::replayToJson(recording), "replays/recorded.json");
+  for (uint64_t tick = 0; tick < played.size(); ++tick)
+    EXPECT_EQ(loaded.inputAt(tick), played[tick]) << "tick " << tick;
+}
+
 TEST(Replay, bad_input_gets_one_message_with_file_line_and_column) {
   EXPECT_EQ(errorOf(replaced(kReplay, R"("tick": 100, "jump")", R"("tick": 10, "jump")")),
             "replays/test.json:11:15: input[2].tick: events must be in tick order; tick 10 comes "
