@@ -1,7 +1,6 @@
-// render, play and preview: draw a level headless and write a PNG.
+// render and preview: draw a level headless and write a PNG (play falls back to render).
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <thread>
@@ -135,27 +134,6 @@ fs::path defaultOutput(const fs::path& levelFile) {
 int commandRender(const Options& options) {
   if (options.positional.size() != 1) throw UsageError("render: expected one level file");
   const fs::path level = options.positional[0];
-  return renderLevel(level, options, options.out.value_or(defaultOutput(level)));
-}
-
-int commandPlay(const Options& options) {
-  fs::path level;
-  if (!options.positional.empty()) {
-    level = options.positional[0];
-  } else {
-    const auto levels = app::shippedLevels(app::findDataRoot());
-    if (levels.empty()) throw UsageError("play: no levels found in levels/");
-    level = levels.front();
-  }
-  const char* display = std::getenv("DISPLAY");
-  const char* wayland = std::getenv("WAYLAND_DISPLAY");
-  if ((display && *display) || (wayland && *wayland)) {
-    std::printf("The game window is not built yet; rendering %s headless instead.\n",
-                level.c_str());
-  } else {
-    std::printf("No display (DISPLAY and WAYLAND_DISPLAY are unset): rendering %s headless.\n",
-                level.c_str());
-  }
   return renderLevel(level, options, options.out.value_or(defaultOutput(level)));
 }
 

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "game/level_order.hpp"
+
 namespace app {
 namespace fs = std::filesystem;
 
@@ -33,9 +35,17 @@ fs::path findDataRoot() {
 }
 
 std::vector<fs::path> shippedLevels(const fs::path& dataRoot) {
+  const fs::path levelsDirectory = dataRoot / "levels";
   std::vector<fs::path> levels;
   std::error_code error;
-  for (const auto& entry : fs::directory_iterator(dataRoot / "levels", error)) {
+  // A broken order file throws game::LevelError: a shipped mistake should be loud, not reorder
+  // the campaign silently.
+  if (fs::exists(levelsDirectory / "order.txt", error)) {
+    for (const std::string& name : game::loadLevelOrder(levelsDirectory))
+      levels.push_back(levelsDirectory / name);
+    return levels;
+  }
+  for (const auto& entry : fs::directory_iterator(levelsDirectory, error)) {
     const fs::path& path = entry.path();
     if (path.extension() == ".json" &&
         path.filename().string().find(".schema.") == std::string::npos)

@@ -8,7 +8,8 @@ namespace app {
 // installed binary (../share/sightline), else the source tree the binary was built from.
 std::filesystem::path findDataRoot();
 
-// The shipped levels in play order (levels/*.json by file name; the schema is not a level).
+// The shipped levels in play order: levels/order.txt when it exists, else levels/*.json by
+// file name (the schema is not a level).
 std::vector<std::filesystem::path> shippedLevels(const std::filesystem::path& dataRoot);
 
 }  // namespace app

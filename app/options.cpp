@@ -8,7 +8,7 @@ namespace app {
 const char* const kUsage = R"(usage: sightline <command> [options]
 
 commands:
-  play [level.json]            play (headless render until the window lands; see README)
+  play [level.json]            play in a window (without a display: render headless)
   render <level.json>          render a level headless and write a PNG
   preview <level.json>         render a thumbnail from the spawn camera (--watch: re-render
                                whenever the level or a file it uses is saved)
@@ -22,7 +22,7 @@ commands:
                                when all hold); --trace FILE.csv for the per-tick values
 
 options:
-  --size WxH          image size (render: 320x180)
+  --size WxH          image size (render: 320x180; play: render size, scaled to the window)
   --out FILE          PNG to write (render: out/<level>.png)
   --frames N          frames to render (render: 1, bench: 300)
   --tonemap MODE      aces (default) or identity (exposure, then clamp)
@@ -36,6 +36,9 @@ options:
   --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
   --trace FILE.csv    replay: write each tick's probe values, goal progress and player state
   --update-images     replay: store the image checkpoints as rendered now
+  --quit-after-ticks N
+                      play: exit cleanly after N world ticks (for scripts and tests)
+  --hud-off           play: no on-screen HUD (the window title shows the progress)
 )";
 
 namespace {
@@ -109,6 +112,10 @@ Options parseOptions(int argc, char** argv) {
       options.watchLimit = parseCount("--watch-limit", value(), 1, 1000000);
     } else if (argument == "--update-images") {
       options.updateImages = true;
+    } else if (argument == "--quit-after-ticks") {
+      options.quitAfterTicks = parseCount("--quit-after-ticks", value(), 1, 100000000);
+    } else if (argument == "--hud-off") {
+      options.hudOff = true;
     } else if (argument == "--trace") {
       options.trace = value();
     } else if (argument == "--help" || argument == "-h") {

@@ -35,7 +35,9 @@ struct Options {
   uint32_t samplesPerPixel = 256;
   uint32_t watchLimit = 0;                     // 0: no limit
   std::optional<std::filesystem::path> trace;  // replay: per-tick CSV of probes and player
-  bool updateImages = false;  // replay: write image checkpoints instead of comparing
+  bool updateImages = false;    // replay: write image checkpoints instead of comparing
+  uint64_t quitAfterTicks = 0;  // play: exit cleanly after this many ticks (0: play on)
+  bool hudOff = false;          // play: no on-screen HUD (accepted; there is none yet)
 };
 
 // Throws UsageError naming the option and what was expected.

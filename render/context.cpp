@@ -73,7 +73,8 @@ int deviceTypeRank(VkPhysicalDeviceType type) {
   }
 }
 
-VkInstance createInstance(bool validate, bool* debugUtilsEnabled) {
+VkInstance createInstance(bool validate, const std::vector<std::string>& extraExtensions,
+                          bool* debugUtilsEnabled) {
   uint32_t extensionCount = 0;
   vkEnumerateInstanceExtensionProperties(nullptr, &extensionCount, nullptr);
   std::vector<VkExtensionProperties> extensions(extensionCount);
@@ -85,6 +86,11 @@ VkInstance createInstance(bool validate, bool* debugUtilsEnabled) {
   };
 
   std::vector<const char*> enabledExtensions;
+  for (const std::string& name : extraExtensions) {
+    if (!hasExtension(name.c_str()))
+      throw RenderError("the Vulkan loader lacks the instance extension " + name);
+    enabledExtensions.push_back(name.c_str());
+  }
   std::vector<const char*> layers;
   *debugUtilsEnabled = false;
   VkValidationFeatureEnableEXT enabledFeatures[] = {
@@ -197,7 +203,7 @@ std::string describeMissingRayTracing(const DeviceInfo& device) {
 
 std::vector<DeviceInfo> Context::listDevices(const std::vector<std::string>& extraExtensions) {
   bool debugUtils = false;
-  VkInstance instance = createInstance(false, &debugUtils);
+  VkInstance instance = createInstance(false, {}, &debugUtils);
   std::vector<DeviceInfo> devices;
   try {
     uint32_t index = 0;
@@ -213,7 +219,7 @@ std::vector<DeviceInfo> Context::listDevices(const std::vector<std::string>& ext
 
 Context::Context(const ContextOptions& options) : options_(options) {
   bool debugUtils = false;
-  instance_ = createInstance(options.validate, &debugUtils);
+  instance_ = createInstance(options.validate, options.extraInstanceExtensions, &debugUtils);
   try {
     if (debugUtils) {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -233,9 +239,11 @@ Context::Context(const ContextOptions& options) : options_(options) {
 
     // Choose: the selected device, else the best-ranked one that has ray tracing.
     const std::vector<VkPhysicalDevice> devices = physicalDevices(instance_);
+    std::vector<std::string> requiredExtensions = options.extraDeviceExtensions;
+    if (options.presentation) requiredExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     std::vector<DeviceInfo> infos;
     for (uint32_t i = 0; i < devices.size(); ++i)
-      infos.push_back(describeDevice(devices[i], i, options.extraDeviceExtensions));
+      infos.push_back(describeDevice(devices[i], i, requiredExtensions));
     if (infos.empty()) {
       throw RenderError(
           "the Vulkan loader found no device: install a driver with ray tracing (Debian 12: "
@@ -335,8 +343,7 @@ Context::Context(const ContextOptions& options) : options_(options) {
     enable.features.shaderInt64 = features.features.shaderInt64;
 
     std::vector<const char*> extensions(kRayTracingExtensions.begin(), kRayTracingExtensions.end());
-    for (const std::string& name : options.extraDeviceExtensions)
-      extensions.push_back(name.c_str());
+    for (const std::string& name : requiredExtensions) extensions.push_back(name.c_str());
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queueInfo.queueFamilyIndex = queueFamily_;

@@ -16,6 +16,10 @@ struct ContextOptions {
   // Extensions a device must have besides the ray tracing ones (tests use a fake one to
   // exercise the "missing extension" message).
   std::vector<std::string> extraDeviceExtensions;
+  // Instance extensions a window system needs for its surface (glfwGetRequiredInstanceExtensions).
+  std::vector<std::string> extraInstanceExtensions;
+  // Presenting to a window: requires and enables VK_KHR_swapchain on the device.
+  bool presentation = false;
 };
 
 struct DeviceInfo {

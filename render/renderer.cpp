@@ -599,6 +599,10 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   stamp(4);
 }
 
+VkImage Renderer::outputImage() const {
+  return outputImage_->image();
+}
+
 uint32_t Renderer::denoiserIterations(const FrameDesc& frame) const {
   return frame.referenceAccumulation ? 0u : std::min(options_.denoiserIterations, 5u);
 }

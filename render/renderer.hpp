@@ -81,6 +81,10 @@ class Renderer {
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
+  // The last frame's display image (R8G8B8A8_UNORM holding sRGB-encoded bytes, usable as a
+  // transfer source). After renderFrame it is in VK_IMAGE_LAYOUT_GENERAL; a user that changes
+  // the layout (a presenter's blit) must put it back to GENERAL before the next frame.
+  VkImage outputImage() const;
   // Soft-shadow denoiser images of the last frame (test and debugging hook; waits).
   std::vector<glm::vec4> readDenoiser(DenoiserImage which) const;
   // Replaces the history the next frame reprojects (test hook: long histories, NaN).

@@ -1,0 +1,376 @@
+#include "render/presenter.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#define GLFW_INCLUDE_VULKAN
+#include <GLFW/glfw3.h>
+
+#include "render/barriers.hpp"
+#include "render/context.hpp"
+#include "render/renderer.hpp"
+#include "render/vulkan_error.hpp"
+
+namespace render {
+namespace {
+
+constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the renderer's output image
+
+bool canBlitTo(VkPhysicalDevice physicalDevice, VkFormat format) {
+  VkFormatProperties properties{};
+  vkGetPhysicalDeviceFormatProperties(physicalDevice, format, &properties);
+  return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0;
+}
+
+bool isSrgb(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// A UNORM 8-bit format first (the bytes are already sRGB-encoded), then any non-sRGB format
+// the blit can write, then whatever the surface offers.
+VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physicalDevice, VkSurfaceKHR surface) {
+  uint32_t count = 0;
+  vkCheck(vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, surface, &count, nullptr),
+          "vkGetPhysicalDeviceSurfaceFormatsKHR");
+  std::vector<VkSurfaceFormatKHR> formats(count);
+  vkCheck(vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, surface, &count, formats.data()),
+          "vkGetPhysicalDeviceSurfaceFormatsKHR");
+  if (formats.empty()) throw RenderError("the window surface offers no formats");
+  for (VkFormat preferred : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
+    for (const VkSurfaceFormatKHR& format : formats) {
+      if (format.format == preferred && format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR &&
+          canBlitTo(physicalDevice, format.format))
+        return format;
+    }
+  }
+  for (const VkSurfaceFormatKHR& format : formats)
+    if (!isSrgb(format.format) && canBlitTo(physicalDevice, format.format)) return format;
+  return formats.front();
+}
+
+VkPresentModeKHR choosePresentMode(VkPhysicalDevice physicalDevice, VkSurfaceKHR surface,
+                                   bool vsync) {
+  if (vsync) return VK_PRESENT_MODE_FIFO_KHR;  // always supported
+  uint32_t count = 0;
+  vkCheck(vkGetPhysicalDeviceSurfacePresentModesKHR(physicalDevice, surface, &count, nullptr),
+          "vkGetPhysicalDeviceSurfacePresentModesKHR");
+  std::vector<VkPresentModeKHR> modes(count);
+  vkCheck(vkGetPhysicalDeviceSurfacePresentModesKHR(physicalDevice, surface, &count, modes.data()),
+          "vkGetPhysicalDeviceSurfacePresentModesKHR");
+  for (VkPresentModeKHR preferred : {VK_PRESENT_MODE_MAILBOX_KHR, VK_PRESENT_MODE_IMMEDIATE_KHR})
+    if (std::find(modes.begin(), modes.end(), preferred) != modes.end()) return preferred;
+  return VK_PRESENT_MODE_FIFO_KHR;
+}
+
+VkSemaphore createSemaphore(VkDevice device) {
+  VkSemaphoreCreateInfo info{VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
+  VkSemaphore semaphore = VK_NULL_HANDLE;
+  vkCheck(vkCreateSemaphore(device, &info, nullptr, &semaphore), "vkCreateSemaphore");
+  return semaphore;
+}
+
+// The largest rectangle of the source's aspect ratio centred in the target.
+void fitRectangle(uint32_t sourceWidth, uint32_t sourceHeight, VkExtent2D target, VkOffset3D* low,
+                  VkOffset3D* high) {
+  const double scale =
+      std::min(double(target.width) / sourceWidth, double(target.height) / sourceHeight);
+  const int32_t width = std::max(1, int32_t(sourceWidth * scale + 0.5));
+  const int32_t height = std::max(1, int32_t(sourceHeight * scale + 0.5));
+  const int32_t x = (int32_t(target.width) - width) / 2;
+  const int32_t y = (int32_t(target.height) - height) / 2;
+  *low = {x, y, 0};
+  *high = {x + width, y + height, 1};
+}
+
+}  // namespace
+
+const char* Presenter::formatName(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_B8G8R8A8_UNORM:
+      return "B8G8R8A8_UNORM";
+    case VK_FORMAT_R8G8B8A8_UNORM:
+      return "R8G8B8A8_UNORM";
+    case VK_FORMAT_B8G8R8A8_SRGB:
+      return "B8G8R8A8_SRGB";
+    case VK_FORMAT_R8G8B8A8_SRGB:
+      return "R8G8B8A8_SRGB";
+    case VK_FORMAT_A2R10G10B10_UNORM_PACK32:
+      return "A2R10G10B10_UNORM";
+    case VK_FORMAT_A2B10G10R10_UNORM_PACK32:
+      return "A2B10G10R10_UNORM";
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+      return "R16G16B16A16_SFLOAT";
+    default:
+      return "other format";
+  }
+}
+
+const char* Presenter::presentModeName(VkPresentModeKHR mode) {
+  switch (mode) {
+    case VK_PRESENT_MODE_FIFO_KHR:
+      return "FIFO";
+    case VK_PRESENT_MODE_FIFO_RELAXED_KHR:
+      return "FIFO_RELAXED";
+    case VK_PRESENT_MODE_MAILBOX_KHR:
+      return "MAILBOX";
+    case VK_PRESENT_MODE_IMMEDIATE_KHR:
+      return "IMMEDIATE";
+    default:
+      return "other mode";
+  }
+}
+
+Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync)
+    : context_(context), window_(window), vsync_(vsync) {
+  const VkResult surfaceResult =
+      glfwCreateWindowSurface(context.instance(), window, nullptr, &surface_);
+  if (surfaceResult != VK_SUCCESS) {
+    throw RenderError(std::string("glfwCreateWindowSurface failed (") +
+                      vkResultName(surfaceResult) + ")");
+  }
+  try {
+    VkBool32 canPresent = VK_FALSE;
+    vkCheck(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), context.queueFamily(),
+                                                 surface_, &canPresent),
+            "vkGetPhysicalDeviceSurfaceSupportKHR");
+    if (!canPresent) {
+      throw RenderError(context.deviceInfo().name +
+                        "'s ray tracing queue cannot present to this window");
+    }
+    // Linear filtering where the display format allows it: smoother at non-integer scales.
+    VkFormatProperties displayProperties{};
+    vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), kDisplayFormat,
+                                        &displayProperties);
+    if (displayProperties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
+      filter_ = VK_FILTER_LINEAR;
+
+    imageAcquired_ = createSemaphore(context.device());
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first blit
+    vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &blitFinished_), "vkCreateFence");
+    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    allocateInfo.commandPool = context.commandPool();
+    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    allocateInfo.commandBufferCount = 1;
+    vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
+            "vkAllocateCommandBuffers");
+    createSwapchain();
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+Presenter::~Presenter() {
+  release();
+}
+
+void Presenter::release() {
+  const VkDevice device = context_.device();
+  if (blitFinished_) vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX);
+  // Presentation has no fence of its own; the queue going idle covers the last present.
+  vkQueueWaitIdle(context_.queue());
+  destroySwapchainResources();
+  if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
+  swapchain_ = VK_NULL_HANDLE;
+  if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
+  commands_ = VK_NULL_HANDLE;
+  if (blitFinished_) vkDestroyFence(device, blitFinished_, nullptr);
+  blitFinished_ = VK_NULL_HANDLE;
+  if (imageAcquired_) vkDestroySemaphore(device, imageAcquired_, nullptr);
+  imageAcquired_ = VK_NULL_HANDLE;
+  if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
+  surface_ = VK_NULL_HANDLE;
+}
+
+void Presenter::setVsync(bool vsync) {
+  if (vsync == vsync_) return;
+  vsync_ = vsync;
+  swapchainStale_ = true;
+}
+
+void Presenter::destroySwapchainResources() {
+  for (VkSemaphore semaphore : blitDone_) vkDestroySemaphore(context_.device(), semaphore, nullptr);
+  blitDone_.clear();
+  images_.clear();
+}
+
+void Presenter::createSwapchain() {
+  const VkPhysicalDevice physicalDevice = context_.physicalDevice();
+  VkSurfaceCapabilitiesKHR capabilities{};
+  vkCheck(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physicalDevice, surface_, &capabilities),
+          "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
+  if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
+    throw RenderError("the window surface's images cannot be blit targets");
+  const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_);
+  presentMode_ = choosePresentMode(physicalDevice, surface_, vsync_);
+
+  VkExtent2D extent = capabilities.currentExtent;
+  if (extent.width == UINT32_MAX) {  // the surface takes its size from the swapchain
+    int width = 0, height = 0;
+    glfwGetFramebufferSize(window_, &width, &height);
+    extent.width = std::clamp(uint32_t(std::max(width, 1)), capabilities.minImageExtent.width,
+                              capabilities.maxImageExtent.width);
+    extent.height = std::clamp(uint32_t(std::max(height, 1)), capabilities.minImageExtent.height,
+                               capabilities.maxImageExtent.height);
+  }
+  uint32_t imageCount = capabilities.minImageCount + 1;
+  if (capabilities.maxImageCount != 0)
+    imageCount = std::min(imageCount, capabilities.maxImageCount);
+  VkCompositeAlphaFlagBitsKHR compositeAlpha = VK_COMPOSITE_ALPHA_OPAQUE_BIT_KHR;
+  if (!(capabilities.supportedCompositeAlpha & compositeAlpha)) {
+    for (VkCompositeAlphaFlagBitsKHR candidate :
+         {VK_COMPOSITE_ALPHA_INHERIT_BIT_KHR, VK_COMPOSITE_ALPHA_PRE_MULTIPLIED_BIT_KHR,
+          VK_COMPOSITE_ALPHA_POST_MULTIPLIED_BIT_KHR}) {
+      if (capabilities.supportedCompositeAlpha & candidate) {
+        compositeAlpha = candidate;
+        break;
+      }
+    }
+  }
+
+  VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
+  info.surface = surface_;
+  info.minImageCount = imageCount;
+  info.imageFormat = surfaceFormat.format;
+  info.imageColorSpace = surfaceFormat.colorSpace;
+  info.imageExtent = extent;
+  info.imageArrayLayers = 1;
+  // Cleared and blitted to, never drawn: transfer usage is all it needs.
+  info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  info.preTransform = capabilities.currentTransform;
+  info.compositeAlpha = compositeAlpha;
+  info.presentMode = presentMode_;
+  info.clipped = VK_TRUE;
+  info.oldSwapchain = swapchain_;
+  VkSwapchainKHR swapchain = VK_NULL_HANDLE;
+  vkCheck(vkCreateSwapchainKHR(context_.device(), &info, nullptr, &swapchain),
+          "vkCreateSwapchainKHR");
+  destroySwapchainResources();
+  if (swapchain_) vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
+  swapchain_ = swapchain;
+  format_ = surfaceFormat.format;
+  extent_ = extent;
+
+  uint32_t count = 0;
+  vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, nullptr),
+          "vkGetSwapchainImagesKHR");
+  images_.resize(count);
+  vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, images_.data()),
+          "vkGetSwapchainImagesKHR");
+  for (uint32_t i = 0; i < count; ++i) blitDone_.push_back(createSemaphore(context_.device()));
+  swapchainStale_ = false;
+}
+
+void Presenter::recreateSwapchain() {
+  vkCheck(vkWaitForFences(context_.device(), 1, &blitFinished_, VK_TRUE, UINT64_MAX),
+          "vkWaitForFences");
+  // The old images' semaphores may still be waited on by a queued present.
+  vkCheck(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
+  createSwapchain();
+}
+
+bool Presenter::present(const Renderer& renderer) {
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  if (width <= 0 || height <= 0) return false;  // minimised: nothing to show
+  if (swapchainStale_ || uint32_t(width) != extent_.width || uint32_t(height) != extent_.height)
+    recreateSwapchain();
+
+  const VkDevice device = context_.device();
+  vkCheck(vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  uint32_t imageIndex = 0;
+  const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAcquired_,
+                                                  VK_NULL_HANDLE, &imageIndex);
+  if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
+    swapchainStale_ = true;  // the semaphore was not signalled; try again next frame
+    return false;
+  }
+  if (acquired != VK_SUBOPTIMAL_KHR) vkCheck(acquired, "vkAcquireNextImageKHR");
+  // Reset only once a submit that signals it is certain to follow.
+  vkCheck(vkResetFences(device, 1, &blitFinished_), "vkResetFences");
+
+  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
+  recordBlit(commands_, renderer, images_[imageIndex]);
+  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+
+  // The clear and blit write the image at the transfer stage: wait for the acquire there.
+  const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.waitSemaphoreCount = 1;
+  submit.pWaitSemaphores = &imageAcquired_;
+  submit.pWaitDstStageMask = &waitStage;
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands_;
+  submit.signalSemaphoreCount = 1;
+  submit.pSignalSemaphores = &blitDone_[imageIndex];
+  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, blitFinished_), "vkQueueSubmit");
+
+  VkPresentInfoKHR presentInfo{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
+  presentInfo.waitSemaphoreCount = 1;
+  presentInfo.pWaitSemaphores = &blitDone_[imageIndex];
+  presentInfo.swapchainCount = 1;
+  presentInfo.pSwapchains = &swapchain_;
+  presentInfo.pImageIndices = &imageIndex;
+  const VkResult presented = vkQueuePresentKHR(context_.queue(), &presentInfo);
+  if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
+      acquired == VK_SUBOPTIMAL_KHR) {
+    swapchainStale_ = true;
+  } else {
+    vkCheck(presented, "vkQueuePresentKHR");
+  }
+  return true;
+}
+
+void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target) {
+  const VkImage source = renderer.outputImage();
+  // The renderer's passes (and a readback copy with its layout changes) wrote the image in
+  // earlier submits; make all of it visible to this blit's read.
+  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                     VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
+  // The previous contents are not needed; the acquire semaphore waited at this stage.
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  // Black bars where the window's aspect ratio differs from the image's.
+  const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
+  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+  vkCmdClearColorImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+
+  VkImageBlit blit{};
+  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  blit.srcOffsets[1] = {int32_t(renderer.width()), int32_t(renderer.height()), 1};
+  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  fitRectangle(renderer.width(), renderer.height(), extent_, &blit.dstOffsets[0],
+               &blit.dstOffsets[1]);
+  vkCmdBlitImage(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, filter_);
+
+  // Presentation needs no access mask: the semaphore signal orders it after the blit.
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+  // Back to GENERAL, as the renderer expects, before anything later touches the image.
+  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                     VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+}
+
+}  // namespace render

@@ -1,0 +1,71 @@
+#pragma once
+// Shows the renderer's output in a GLFW window: a surface, a swapchain and a scaled blit.
+//
+// The renderer's display image is R8G8B8A8_UNORM already holding sRGB-encoded bytes, so the
+// swapchain prefers a UNORM format: a blit into an _SRGB image would encode a second time.
+// The blit keeps the image's aspect ratio and fills the rest of the window with black.
+#include <cstdint>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+struct GLFWwindow;
+
+namespace render {
+
+class Context;
+class Renderer;
+
+class Presenter {
+ public:
+  // The context must have been made with ContextOptions::presentation and the instance
+  // extensions glfwGetRequiredInstanceExtensions names. Throws RenderError.
+  Presenter(const Context& context, GLFWwindow* window, bool vsync);
+  ~Presenter();
+  Presenter(const Presenter&) = delete;
+  Presenter& operator=(const Presenter&) = delete;
+
+  // Blits the renderer's last frame to the window and queues it for display. Returns false
+  // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
+  bool present(const Renderer& renderer);
+
+  // FIFO when on; MAILBOX, else IMMEDIATE, when off and the surface has one. Recreates the
+  // swapchain on the next present.
+  void setVsync(bool vsync);
+  bool vsync() const { return vsync_; }
+
+  VkExtent2D extent() const { return extent_; }
+  VkFormat format() const { return format_; }
+  VkPresentModeKHR presentMode() const { return presentMode_; }
+
+  static const char* formatName(VkFormat format);
+  static const char* presentModeName(VkPresentModeKHR mode);
+
+ private:
+  void release();  // every Vulkan object, after the queue has finished with them
+  void createSwapchain();
+  void destroySwapchainResources();
+  // Waits for the last blit, then rebuilds the swapchain for the window's current size.
+  void recreateSwapchain();
+  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target);
+
+  const Context& context_;
+  GLFWwindow* window_;
+  bool vsync_;
+  bool swapchainStale_ = false;  // resized, out of date, or vsync changed
+  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+  VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
+  VkFormat format_ = VK_FORMAT_UNDEFINED;
+  VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
+  VkExtent2D extent_{};
+  std::vector<VkImage> images_;
+  // One per swapchain image: a present may still wait on its semaphore while the next frame
+  // is recorded, and an image is only acquired again after its presentation is done.
+  std::vector<VkSemaphore> blitDone_;
+  VkSemaphore imageAcquired_ = VK_NULL_HANDLE;  // reusable once blitFinished_ has signalled
+  VkFence blitFinished_ = VK_NULL_HANDLE;
+  VkCommandBuffer commands_ = VK_NULL_HANDLE;
+  VkFilter filter_ = VK_FILTER_NEAREST;
+};
+
+}  // namespace render
