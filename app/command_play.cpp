@@ -6,7 +6,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -100,6 +102,7 @@ class Game {
   // Plays until the window closes or --quit-after-ticks; returns the exit status.
   int run(const fs::path& firstLevel) {
     load(firstLevel);
+    if (options_.record) startRecording();
     setPaused(false);
     const double started = glfwGetTime();
     double titleAt = started;
@@ -135,6 +138,7 @@ class Game {
         framesSinceTitle = 0;
       }
     }
+    finishRecording();
     // The presenter's last blit reads the renderer's image: finish it before either goes.
     vkDeviceWaitIdle(context_.device());
     simulation_.reset();
@@ -142,7 +146,42 @@ class Game {
   }
 
  private:
+  // --record: the first level's run, from its first tick until it is won, lost, left or the
+  // game quits, as a replay that `sightline replay` plays back to the same outcome.
+  void startRecording() {
+    game::Replay replay;
+    replay.file = fs::absolute(*options_.record);
+    replay.level = fs::absolute(levelFile_);
+    replay.width = options_.width;
+    replay.height = options_.height;
+    sim::SimulationOptions defaults;
+    replay.probeEveryTicks = defaults.probeEveryTicks;
+    replay.probeLatency = defaults.probeLatency;
+    replay.ticks = 0;
+    recording_ = std::move(replay);
+  }
+
+  void finishRecording() {
+    if (!recording_) return;
+    game::Replay& replay = *recording_;
+    const game::Outcome outcome = simulation_->outcome();
+    replay.outcome.outcome = outcome == game::Outcome::Won    ? game::ReplayOutcome::Won
+                             : outcome == game::Outcome::Lost ? game::ReplayOutcome::Lost
+                                                              : game::ReplayOutcome::Playing;
+    replay.outcome.firstTick = replay.outcome.lastTick = simulation_->tick();
+    if (replay.ticks == 0) replay.ticks = 1;  // a replay runs at least one tick
+    std::ofstream out(replay.file);
+    out << game::replayToJson(replay);
+    if (!out) throw std::runtime_error("cannot write the recording " + replay.file.string());
+    std::printf("recorded %llu ticks of %s to %s\n",
+                static_cast<unsigned long long>(simulation_->tick()), level_->name.c_str(),
+                replay.file.c_str());
+    std::fflush(stdout);
+    recording_.reset();
+  }
+
   void load(const fs::path& file) {
+    if (simulation_) finishRecording();  // leaving the recorded level
     auto level = std::make_unique<game::Level>(game::loadLevel(file));
     for (const std::string& warning : level->warnings)
       std::fprintf(stderr, "warning: %s\n", warning.c_str());
@@ -309,6 +348,7 @@ class Game {
         input.adjust = std::clamp(input.adjust + wheelDirection_, -1.0f, 1.0f);
       }
       simulation_->step(input);
+      if (recording_) game::appendTickInput(*recording_, input);
       ++ticksPlayed_;
       if (options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks) return;
       if (simulation_->outcome() != game::Outcome::Playing) return;
@@ -321,6 +361,7 @@ class Game {
     if (outcome == game::Outcome::Playing) return;
     if (outcomeAt_ < 0.0) {
       outcomeAt_ = now;
+      finishRecording();
       std::printf("%s %s at tick %llu%s%s\n", outcome == game::Outcome::Won ? "won" : "lost",
                   level_->name.c_str(), static_cast<unsigned long long>(simulation_->tick()),
                   simulation_->rules().reason().empty() ? "" : ": ",
@@ -388,8 +429,9 @@ class Game {
   bool paused_ = false;
   double accumulator_ = 0.0;  // real time not yet turned into ticks
   double lastFrameAt_ = 0.0;
-  double outcomeAt_ = -1.0;   // when the level was won or lost; < 0 while playing
-  uint64_t ticksPlayed_ = 0;  // over all levels, for --quit-after-ticks
+  double outcomeAt_ = -1.0;                // when the level was won or lost; < 0 while playing
+  uint64_t ticksPlayed_ = 0;               // over all levels, for --quit-after-ticks
+  std::optional<game::Replay> recording_;  // --record, until the first level's run ends
   uint64_t framesShown_ = 0;
   glm::vec2 pendingLook_{0.0f};  // yaw, pitch degrees from the mouse since the last tick
   double cursorX_ = 0.0, cursorY_ = 0.0;

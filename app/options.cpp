@@ -39,6 +39,7 @@ options:
   --quit-after-ticks N
                       play: exit cleanly after N world ticks (for scripts and tests)
   --hud-off           play: no on-screen HUD (the window title shows the progress)
+  --record FILE.json  play: save the first level's run as a replay (until won, lost or quit)
 )";
 
 namespace {
@@ -116,6 +117,8 @@ Options parseOptions(int argc, char** argv) {
       options.quitAfterTicks = parseCount("--quit-after-ticks", value(), 1, 100000000);
     } else if (argument == "--hud-off") {
       options.hudOff = true;
+    } else if (argument == "--record") {
+      options.record = value();
     } else if (argument == "--trace") {
       options.trace = value();
     } else if (argument == "--help" || argument == "-h") {

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `sightline play` under Xvfb: the window opens with a swapchain, the level renders and is
-# presented, and --quit-after-ticks exits cleanly with no validation message.
+# presented, and --quit-after-ticks exits cleanly with no validation message; the run recorded
+# with --record replays headless to the same outcome.
 # Usage: play_window_test.sh path/to/sightline path/to/level.json
 set -uo pipefail
 sightline=$1
@@ -15,10 +16,11 @@ for tool in xvfb-run Xvfb xauth; do
 done
 
 log=$(mktemp)
-trap 'rm -f "$log"' EXIT
+recording=$(mktemp --suffix=.json)
+trap 'rm -f "$log" "$recording"' EXIT
 # The test's own display, even when one is set: no window on a developer's screen.
 env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
-  "$sightline" play "$level" --validate --quit-after-ticks 30 >"$log" 2>&1
+  "$sightline" play "$level" --validate --quit-after-ticks 30 --record "$recording" >"$log" 2>&1
 status=$?
 cat "$log"
 
@@ -33,4 +35,8 @@ grep -q "^quit after 30 ticks" "$log" || fail "the scripted quit after 30 ticks 
 grep -q "^quit after 30 ticks, 0 frames shown" "$log" && fail "no frame was presented"
 grep -qi "validation" "$log" && fail "validation messages (see above)"
 grep -q "headless" "$log" && fail "play fell back to a headless render"
+grep -q "^recorded 30 ticks of " "$log" || fail "no recording was written"
+"$sightline" replay "$recording" >"$log" 2>&1 || { cat "$log"; fail "the recording does not replay"; }
+cat "$log"
+grep -q "PASS neither won nor lost in 30 ticks" "$log" || fail "the recording replayed differently"
 echo "PASS"
