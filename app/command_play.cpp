@@ -19,8 +19,11 @@
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
+#include "game/progress.hpp"
 #include "game/replay.hpp"
 #include "game/rules.hpp"
+#include "game/settings.hpp"
+#include "game/user_paths.hpp"
 #include "render/context.hpp"
 #include "render/presenter.hpp"
 #include "render/vulkan_error.hpp"
@@ -37,7 +40,6 @@ constexpr double kTickSeconds = game::Rules::TICK_SECONDS;
 // spending ever longer frames catching up.
 constexpr int kMaxTicksPerFrame = 5;
 constexpr double kOutcomeSeconds = 2.0;  // how long "won"/"lost" shows before moving on
-constexpr float kMouseDegreesPerPixel = 0.1f;
 constexpr float kStickDegreesPerSecond = 150.0f;
 constexpr float kStickDeadZone = 0.2f;
 constexpr uint32_t kWheelAdjustTicks = 6;  // one wheel notch adjusts for 0.1 s
@@ -84,9 +86,11 @@ bool readGamepad(GLFWgamepadstate* state) {
 
 class Game {
  public:
-  Game(const Options& options, GLFWwindow* window, const render::Context& context,
-       render::ShaderCompiler& compiler, render::Presenter& presenter)
+  Game(const Options& options, const game::Settings& settings, GLFWwindow* window,
+       const render::Context& context, render::ShaderCompiler& compiler,
+       render::Presenter& presenter)
       : options_(options),
+        settings_(settings),
         window_(window),
         context_(context),
         compiler_(compiler),
@@ -148,6 +152,18 @@ class Game {
  private:
   // --record: the first level's run, from its first tick until it is won, lost, left or the
   // game quits, as a replay that `sightline replay` plays back to the same outcome.
+  // A won level unlocks the next one (progress.json); a failed save is said, not fatal.
+  void saveWin() {
+    const fs::path file = game::progressFile();
+    game::ProgressLoad loaded = game::loadProgress(file);
+    game::markWon(loaded.progress, levelFile_.filename().string());
+    try {
+      game::saveProgress(loaded.progress, file);
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "progress not saved: %s\n", error.what());
+    }
+  }
+
   void startRecording() {
     game::Replay replay;
     replay.file = fs::absolute(*options_.record);
@@ -291,7 +307,9 @@ class Game {
     double x = 0.0, y = 0.0;
     glfwGetCursorPos(window_, &x, &y);
     // Right turns right (negative yaw), up looks up (positive pitch).
-    pendingLook_ += glm::vec2(-float(x - cursorX_), -float(y - cursorY_)) * kMouseDegreesPerPixel;
+    pendingLook_ +=
+        glm::vec2(-float(x - cursorX_), -float(y - cursorY_) * (settings_.invertY ? -1.0f : 1.0f)) *
+        settings_.mouseSensitivity;
     cursorX_ = x;
     cursorY_ = y;
   }
@@ -362,6 +380,7 @@ class Game {
     if (outcomeAt_ < 0.0) {
       outcomeAt_ = now;
       finishRecording();
+      if (outcome == game::Outcome::Won) saveWin();
       std::printf("%s %s at tick %llu%s%s\n", outcome == game::Outcome::Won ? "won" : "lost",
                   level_->name.c_str(), static_cast<unsigned long long>(simulation_->tick()),
                   simulation_->rules().reason().empty() ? "" : ": ",
@@ -414,6 +433,7 @@ class Game {
   }
 
   const Options& options_;
+  const game::Settings& settings_;
   GLFWwindow* window_;
   const render::Context& context_;
   render::ShaderCompiler& compiler_;
@@ -453,14 +473,28 @@ struct WindowDeleter {
 
 }  // namespace
 
+// Where a new session starts: the first shipped level not yet won (all won: the first).
+fs::path firstUnwonLevel(const std::vector<fs::path>& levels) {
+  const game::ProgressLoad loaded = game::loadProgress(game::progressFile());
+  for (const std::string& message : loaded.messages) std::fprintf(stderr, "%s\n", message.c_str());
+  for (const fs::path& level : levels) {
+    if (!loaded.progress.completed.contains(level.filename().string())) return level;
+  }
+  return levels.front();
+}
+
 int commandPlay(const Options& options) {
+  if (options.resetProgress) {
+    game::saveProgress({}, game::progressFile());
+    std::printf("progress reset: every level but the first is locked again\n");
+  }
   fs::path level;
   if (!options.positional.empty()) {
     level = options.positional[0];
   } else {
     const auto levels = app::shippedLevels(app::findDataRoot());
     if (levels.empty()) throw UsageError("play: no levels found in levels/");
-    level = levels.front();
+    level = firstUnwonLevel(levels);
   }
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
@@ -474,6 +508,10 @@ int commandPlay(const Options& options) {
                 why.c_str(), level.c_str());
     return renderHeadless(options, level);
   };
+
+  const game::SettingsLoad settings = game::loadSettings(game::settingsFile());
+  for (const std::string& message : settings.messages)
+    std::fprintf(stderr, "%s\n", message.c_str());
 
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit()) return fallBack("glfwInit failed: " + glfwErrorText);
@@ -497,7 +535,8 @@ int commandPlay(const Options& options) {
   std::unique_ptr<render::Presenter> presenter;
   try {
     context = std::make_unique<render::Context>(contextSettings);
-    presenter = std::make_unique<render::Presenter>(*context, window.get(), true);
+    presenter =
+        std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync);
   } catch (const render::RenderError& error) {
     presenter.reset();
     context.reset();
@@ -516,7 +555,7 @@ int commandPlay(const Options& options) {
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   int status = 0;
   {
-    Game game(options, window.get(), *context, compiler, *presenter);
+    Game game(options, settings.settings, window.get(), *context, compiler, *presenter);
     status = game.run(level);
   }
   presenter.reset();

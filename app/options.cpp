@@ -40,6 +40,7 @@ options:
                       play: exit cleanly after N world ticks (for scripts and tests)
   --hud-off           play: no on-screen HUD (the window title shows the progress)
   --record FILE.json  play: save the first level's run as a replay (until won, lost or quit)
+  --reset-progress    play: forget which levels were won
 )";
 
 namespace {
@@ -117,6 +118,8 @@ Options parseOptions(int argc, char** argv) {
       options.quitAfterTicks = parseCount("--quit-after-ticks", value(), 1, 100000000);
     } else if (argument == "--hud-off") {
       options.hudOff = true;
+    } else if (argument == "--reset-progress") {
+      options.resetProgress = true;
     } else if (argument == "--record") {
       options.record = value();
     } else if (argument == "--trace") {

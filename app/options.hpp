@@ -39,6 +39,7 @@ struct Options {
   uint64_t quitAfterTicks = 0;  // play: exit cleanly after this many ticks (0: play on)
   bool hudOff = false;          // play: no on-screen HUD (accepted; there is none yet)
   std::optional<std::filesystem::path> record;  // play: write the first level's run as a replay
+  bool resetProgress = false;                   // play: lock every level but the first again
 };
 
 // Throws UsageError naming the option and what was expected.

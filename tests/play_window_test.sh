@@ -17,7 +17,9 @@ done
 
 log=$(mktemp)
 recording=$(mktemp --suffix=.json)
-trap 'rm -f "$log" "$recording"' EXIT
+home=$(mktemp -d)  # settings and progress of this test only
+trap 'rm -rf "$log" "$recording" "$home"' EXIT
+export XDG_CONFIG_HOME=$home/config XDG_DATA_HOME=$home/data
 # The test's own display, even when one is set: no window on a developer's screen.
 env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
   "$sightline" play "$level" --validate --quit-after-ticks 30 --record "$recording" >"$log" 2>&1
@@ -39,4 +41,14 @@ grep -q "^recorded 30 ticks of " "$log" || fail "no recording was written"
 "$sightline" replay "$recording" >"$log" 2>&1 || { cat "$log"; fail "the recording does not replay"; }
 cat "$log"
 grep -q "PASS neither won nor lost in 30 ticks" "$log" || fail "the recording replayed differently"
+
+# Saved progress picks the first level not yet won; saved settings turn vsync off.
+mkdir -p "$XDG_DATA_HOME/sightline" "$XDG_CONFIG_HOME/sightline"
+echo '{"progress": 1, "completed": ["01_first_light.json"]}' >"$XDG_DATA_HOME/sightline/progress.json"
+echo '{"settings": 1, "vsync": false}' >"$XDG_CONFIG_HOME/sightline/settings.json"
+env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
+  "$sightline" play --validate --quit-after-ticks 5 >"$log" 2>&1 || { cat "$log"; fail "second run failed"; }
+cat "$log"
+grep -q "^playing Penumbra " "$log" || fail "with level 1 won, play did not start at level 2"
+grep -q "^window: .* FIFO," "$log" && fail "vsync off in the settings, but the swapchain is FIFO"
 echo "PASS"
