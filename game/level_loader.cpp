@@ -1,4 +1,5 @@
 #include "game/level_loader.hpp"
+#include "game/json_error_sax.hpp"
 
 #include <algorithm>
 #include <array>
@@ -351,24 +352,12 @@ class LevelParser {
   // Collects the first error of a SAX parse. Json::parse throws parse_error for syntax errors,
   // which carries a position, but out_of_range (a number too large) without one; the SAX
   // interface reports both with a position.
-  struct FirstJsonError : nlohmann::json_sax<Json> {
+  struct FirstJsonError : JsonErrorOnlySax<Json> {
     std::size_t bytesRead = 0;
     std::string lastToken;
     std::string what;
     bool isSyntaxError = true;
 
-    bool null() override { return true; }
-    bool boolean(bool) override { return true; }
-    bool number_integer(number_integer_t) override { return true; }
-    bool number_unsigned(number_unsigned_t) override { return true; }
-    bool number_float(number_float_t, const string_t&) override { return true; }
-    bool string(string_t&) override { return true; }
-    bool binary(binary_t&) override { return true; }
-    bool start_object(std::size_t) override { return true; }
-    bool key(string_t&) override { return true; }
-    bool end_object() override { return true; }
-    bool start_array(std::size_t) override { return true; }
-    bool end_array() override { return true; }
     bool parse_error(std::size_t position, const std::string& token,
                      const nlohmann::detail::exception& error) override {
       bytesRead = position;

@@ -1,4 +1,5 @@
 #include "game/user_paths.hpp"
+#include "game/json_error_sax.hpp"
 
 #include <fcntl.h>
 #include <pwd.h>
@@ -135,22 +136,10 @@ std::string locate(const fs::path& file, SourcePosition at) {
 
 // Collects the first error of a SAX parse: syntax errors and numbers too large for a double
 // alike, each with the byte where it was found (json::parse gives no position for the latter).
-struct FirstJsonError : nlohmann::json_sax<nlohmann::ordered_json> {
+struct FirstJsonError : JsonErrorOnlySax<nlohmann::ordered_json> {
   std::size_t bytesRead = 0;
   std::string reason;
 
-  bool null() override { return true; }
-  bool boolean(bool) override { return true; }
-  bool number_integer(number_integer_t) override { return true; }
-  bool number_unsigned(number_unsigned_t) override { return true; }
-  bool number_float(number_float_t, const string_t&) override { return true; }
-  bool string(string_t&) override { return true; }
-  bool binary(binary_t&) override { return true; }
-  bool start_object(std::size_t) override { return true; }
-  bool key(string_t&) override { return true; }
-  bool end_object() override { return true; }
-  bool start_array(std::size_t) override { return true; }
-  bool end_array() override { return true; }
   bool parse_error(std::size_t position, const std::string&,
                    const nlohmann::detail::exception& error) override {
     bytesRead = position;

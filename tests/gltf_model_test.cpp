@@ -147,11 +147,7 @@ class GltfModelTest : public test::TempDirTest {
   }
 };
 
-std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {
-  const std::size_t at = (std::size_t{y} * texture.width + x) * 4;
-  return {texture.rgba.at(at), texture.rgba.at(at + 1), texture.rgba.at(at + 2),
-          texture.rgba.at(at + 3)};
-}
+using test::texel;
 
 // ----- the textured crate asset -----
 

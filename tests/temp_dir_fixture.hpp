@@ -1,11 +1,16 @@
 #pragma once
-// A fresh directory per test under the system's temporary directory, removed afterwards.
+// Test helpers for files: a fresh directory per test under the system's temporary directory,
+// removed afterwards.
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <string>
 
 #include <gtest/gtest.h>
+
+#include "render/scene_desc.hpp"
 
 namespace test {
 
@@ -28,6 +33,13 @@ class TempDirTest : public ::testing::Test {
 inline void writeFile(const std::filesystem::path& path, const std::string& contents) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << contents;
+}
+
+// One RGBA texel of a decoded texture.
+inline std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {
+  const std::size_t at = (std::size_t{y} * texture.width + x) * 4;
+  return {texture.rgba.at(at), texture.rgba.at(at + 1), texture.rgba.at(at + 2),
+          texture.rgba.at(at + 3)};
 }
 
 }  // namespace test

@@ -40,11 +40,7 @@ std::string decodeError(const std::vector<uint8_t>& bytes, const std::string& na
   return "(no error)";
 }
 
-std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {
-  const std::size_t at = (std::size_t{y} * texture.width + x) * 4;
-  return {texture.rgba.at(at), texture.rgba.at(at + 1), texture.rgba.at(at + 2),
-          texture.rgba.at(at + 3)};
-}
+using test::texel;
 
 void appendBigEndian(std::vector<uint8_t>& bytes, uint32_t value) {
   for (int shift = 24; shift >= 0; shift -= 8)
