@@ -133,7 +133,9 @@ class Game {
         advanceAfterOutcome(now);
       }
       simulation_->renderPicture();
-      if (presenter_.present(simulation_->renderer())) ++framesShown_;
+      const std::vector<render::HudRect> hud =
+          options_.hudOff ? std::vector<render::HudRect>{} : hudRects();
+      if (presenter_.present(simulation_->renderer(), hud)) ++framesShown_;
       reportSwapchainChange();
       ++framesSinceTitle;
       if (now - titleAt >= kTitleSeconds) {
@@ -150,8 +152,44 @@ class Game {
   }
 
  private:
-  // --record: the first level's run, from its first tick until it is won, lost, left or the
-  // game quits, as a replay that `sightline replay` plays back to the same outcome.
+  // The heads-up display: each focus region's frame, a bar per goal (blue, green when met),
+  // a meter per exposure probe (orange), and a band at the top once the level is won (green)
+  // or lost (red-orange).
+  std::vector<render::HudRect> hudRects() const {
+    using render::HudColour;
+    std::vector<render::HudRect> rects;
+    for (const game::FocusProbe& focus : simulation_->layout().focus) {
+      const float x0 = 0.5f - focus.region.x / 2, x1 = 0.5f + focus.region.x / 2;
+      const float y0 = 0.5f - focus.region.y / 2, y1 = 0.5f + focus.region.y / 2;
+      constexpr float kLine = 0.004f;
+      rects.push_back({x0, y0, x1, y0 + kLine, HudColour::White});
+      rects.push_back({x0, y1 - kLine, x1, y1, HudColour::White});
+      rects.push_back({x0, y0, x0 + kLine, y1, HudColour::White});
+      rects.push_back({x1 - kLine, y0, x1, y1, HudColour::White});
+    }
+    auto bar = [&](float x0, int row, float value, HudColour fill) {
+      constexpr float kWidth = 0.3f, kHeight = 0.025f, kGap = 0.045f;
+      const float y0 = 0.93f - kGap * float(row), y1 = y0 + kHeight;
+      rects.push_back({x0, y0, x0 + kWidth, y1, HudColour::Shade});
+      if (value > 0.0f)
+        rects.push_back({x0, y0, x0 + kWidth * std::clamp(value, 0.0f, 1.0f), y1, fill});
+    };
+    const auto& goals = simulation_->rules().progress();
+    for (size_t i = 0; i < goals.size() && i < 4; ++i)
+      bar(0.02f, int(i), goals[i].progress,
+          goals[i].met ? HudColour::BluishGreen : HudColour::SkyBlue);
+    if (const auto& readings = simulation_->latestReadings()) {
+      for (size_t i = 0; i < readings->exposure.size() && i < 4; ++i)
+        bar(0.68f, int(i), readings->exposure[i], HudColour::Orange);
+    }
+    const game::Outcome outcome = simulation_->outcome();
+    if (outcome != game::Outcome::Playing)
+      rects.push_back(
+          {0.0f, 0.02f, 1.0f, 0.06f,
+           outcome == game::Outcome::Won ? HudColour::BluishGreen : HudColour::Vermillion});
+    return rects;
+  }
+
   // A won level unlocks the next one (progress.json); a failed save is said, not fatal.
   void saveWin() {
     const fs::path file = game::progressFile();
@@ -164,6 +202,8 @@ class Game {
     }
   }
 
+  // --record: the first level's run, from its first tick until it is won, lost, left or the
+  // game quits, as a replay that `sightline replay` plays back to the same outcome.
   void startRecording() {
     game::Replay replay;
     replay.file = fs::absolute(*options_.record);

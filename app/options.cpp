@@ -38,7 +38,7 @@ options:
   --update-images     replay: store the image checkpoints as rendered now
   --quit-after-ticks N
                       play: exit cleanly after N world ticks (for scripts and tests)
-  --hud-off           play: no on-screen HUD (the window title shows the progress)
+  --hud-off           play: no heads-up display (focus frame, goal bars, exposure meters)
   --record FILE.json  play: save the first level's run as a replay (until won, lost or quit)
   --reset-progress    play: forget which levels were won
 )";

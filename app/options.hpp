@@ -37,7 +37,7 @@ struct Options {
   std::optional<std::filesystem::path> trace;  // replay: per-tick CSV of probes and player
   bool updateImages = false;    // replay: write image checkpoints instead of comparing
   uint64_t quitAfterTicks = 0;  // play: exit cleanly after this many ticks (0: play on)
-  bool hudOff = false;          // play: no on-screen HUD (accepted; there is none yet)
+  bool hudOff = false;          // play: no heads-up display over the picture
   std::optional<std::filesystem::path> record;  // play: write the first level's run as a replay
   bool resetProgress = false;                   // play: lock every level but the first again
 };

@@ -1,6 +1,8 @@
 #include "render/presenter.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <string>
 
@@ -8,8 +10,10 @@
 #include <GLFW/glfw3.h>
 
 #include "render/barriers.hpp"
+#include "render/buffer.hpp"
 #include "render/context.hpp"
 #include "render/renderer.hpp"
+#include "render/storage_image.hpp"
 #include "render/vulkan_error.hpp"
 
 namespace render {
@@ -163,10 +167,45 @@ Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync)
     vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
             "vkAllocateCommandBuffers");
     createSwapchain();
+    createPalette();
   } catch (...) {
     release();
     throw;
   }
+}
+
+void Presenter::createPalette() {
+  // RGBA bytes, already sRGB-encoded like the picture; the blit converts to the swapchain's
+  // channel order, as it does for the picture.
+  constexpr std::array<std::array<uint8_t, 4>, size_t(HudColour::Count)> kColours = {{
+      {255, 255, 255, 255},  // white
+      {40, 40, 40, 255},     // shade: bar backgrounds
+      {86, 180, 233, 255},   // sky blue: progress
+      {0, 158, 115, 255},    // bluish green: met, won
+      {230, 159, 0, 255},    // orange: exposure
+      {213, 94, 0, 255},     // vermillion: lost
+  }};
+  const uint32_t count = uint32_t(kColours.size());
+  palette_ = createImage2D(context_, count, 1, VK_FORMAT_R8G8B8A8_UNORM,
+                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                           "hud palette", &paletteMemory_);
+  Buffer staging(context_, sizeof kColours, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+                 "hud palette upload");
+  staging.write(kColours.data(), sizeof kColours);
+  context_.submitAndWait([&](VkCommandBuffer commands) {
+    imageLayoutBarrier(commands, palette_, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {count, 1, 1};
+    vkCmdCopyBufferToImage(commands, staging.handle(), palette_,
+                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageLayoutBarrier(commands, palette_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT);
+  });
 }
 
 Presenter::~Presenter() {
@@ -189,6 +228,10 @@ void Presenter::release() {
   imageAcquired_ = VK_NULL_HANDLE;
   if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
   surface_ = VK_NULL_HANDLE;
+  if (palette_) vkDestroyImage(device, palette_, nullptr);
+  palette_ = VK_NULL_HANDLE;
+  if (paletteMemory_) vkFreeMemory(device, paletteMemory_, nullptr);
+  paletteMemory_ = VK_NULL_HANDLE;
 }
 
 void Presenter::setVsync(bool vsync) {
@@ -279,7 +322,7 @@ void Presenter::recreateSwapchain() {
   createSwapchain();
 }
 
-bool Presenter::present(const Renderer& renderer) {
+bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   if (width <= 0 || height <= 0) return false;  // minimised: nothing to show
@@ -303,7 +346,7 @@ bool Presenter::present(const Renderer& renderer) {
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordBlit(commands_, renderer, images_[imageIndex]);
+  recordBlit(commands_, renderer, images_[imageIndex], hud);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
 
   // The clear and blit write the image at the transfer stage: wait for the acquire there.
@@ -334,7 +377,8 @@ bool Presenter::present(const Renderer& renderer) {
   return true;
 }
 
-void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target) {
+void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target,
+                           std::span<const HudRect> hud) {
   const VkImage source = renderer.outputImage();
   // The renderer's passes (and a readback copy with its layout changes) wrote the image in
   // earlier submits; make all of it visible to this blit's read.
@@ -361,6 +405,47 @@ void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, V
                &blit.dstOffsets[1]);
   vkCmdBlitImage(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, filter_);
+
+  // The HUD: each rectangle a blit of one palette texel, over the picture.
+  if (!hud.empty()) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkOffset3D low = blit.dstOffsets[0], high = blit.dstOffsets[1];
+    const float width = float(high.x - low.x), height = float(high.y - low.y);
+    std::vector<VkImageBlit> rects;
+    for (const HudRect& rect : hud) {
+      auto toX = [&](float fraction) {
+        return std::clamp(low.x + int32_t(std::lround(fraction * width)), 0,
+                          int32_t(extent_.width));
+      };
+      auto toY = [&](float fraction) {
+        return std::clamp(low.y + int32_t(std::lround(fraction * height)), 0,
+                          int32_t(extent_.height));
+      };
+      int32_t x0 = toX(rect.x0), x1 = std::max(toX(rect.x1), x0 + 2);
+      int32_t y0 = toY(rect.y0), y1 = std::max(toY(rect.y1), y0 + 2);
+      x1 = std::min(x1, int32_t(extent_.width));
+      y1 = std::min(y1, int32_t(extent_.height));
+      if (x1 <= x0 || y1 <= y0) continue;
+      VkImageBlit texel{};
+      texel.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      const int32_t colour = int32_t(rect.colour);
+      texel.srcOffsets[0] = {colour, 0, 0};
+      texel.srcOffsets[1] = {colour + 1, 1, 1};
+      texel.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      texel.dstOffsets[0] = {x0, y0, 0};
+      texel.dstOffsets[1] = {x1, y1, 1};
+      rects.push_back(texel);
+    }
+    // Rectangles may overlap (a bar's fill over its background): one blit each, in order.
+    for (size_t i = 0; i < rects.size(); ++i) {
+      if (i > 0)
+        memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+      vkCmdBlitImage(commands, palette_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &rects[i], VK_FILTER_NEAREST);
+    }
+  }
 
   // Presentation needs no access mask: the semaphore signal orders it after the blit.
   imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,

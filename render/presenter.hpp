@@ -5,6 +5,7 @@
 // swapchain prefers a UNORM format: a blit into an _SRGB image would encode a second time.
 // The blit keeps the image's aspect ratio and fills the rest of the window with black.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
@@ -15,6 +16,17 @@ namespace render {
 
 class Context;
 class Renderer;
+
+// Colours of the heads-up display, from the Okabe-Ito palette so they stay apart for the
+// common colour-vision deficiencies.
+enum class HudColour : uint32_t { White, Shade, SkyBlue, BluishGreen, Orange, Vermillion, Count };
+
+// A solid rectangle over the picture, in fractions of the shown image (0,0 top left, 1,1
+// bottom right); at least 2 window pixels thick, so thin frames stay visible.
+struct HudRect {
+  float x0, y0, x1, y1;
+  HudColour colour;
+};
 
 class Presenter {
  public:
@@ -27,7 +39,7 @@ class Presenter {
 
   // Blits the renderer's last frame to the window and queues it for display. Returns false
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
-  bool present(const Renderer& renderer);
+  bool present(const Renderer& renderer, std::span<const HudRect> hud = {});
 
   // FIFO when on; MAILBOX, else IMMEDIATE, when off and the surface has one. Recreates the
   // swapchain on the next present.
@@ -47,7 +59,9 @@ class Presenter {
   void destroySwapchainResources();
   // Waits for the last blit, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
-  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target);
+  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target,
+                  std::span<const HudRect> hud);
+  void createPalette();
 
   const Context& context_;
   GLFWwindow* window_;
@@ -66,6 +80,9 @@ class Presenter {
   VkFence blitFinished_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
   VkFilter filter_ = VK_FILTER_NEAREST;
+  // One texel per HudColour; rectangles are blits of a texel (TRANSFER_SRC_OPTIMAL for life).
+  VkImage palette_ = VK_NULL_HANDLE;
+  VkDeviceMemory paletteMemory_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render
