@@ -436,13 +436,18 @@ void Context::setName(VkObjectType type, uint64_t handle, const std::string& nam
   rt_.setObjectName(device_, &info);
 }
 
-VkCommandBuffer Context::beginOneTimeCommands() const {
+VkCommandBuffer Context::allocateCommandBuffer() const {
   VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   allocateInfo.commandPool = commandPool_;
   allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
   allocateInfo.commandBufferCount = 1;
   VkCommandBuffer commands = VK_NULL_HANDLE;
   vkCheck(vkAllocateCommandBuffers(device_, &allocateInfo, &commands), "vkAllocateCommandBuffers");
+  return commands;
+}
+
+VkCommandBuffer Context::beginOneTimeCommands() const {
+  VkCommandBuffer commands = allocateCommandBuffer();
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands, &beginInfo), "vkBeginCommandBuffer");

@@ -68,6 +68,8 @@ class Context {
   VkQueue queue() const { return queue_; }
   uint32_t queueFamily() const { return queueFamily_; }
   VkCommandPool commandPool() const { return commandPool_; }
+  // A primary command buffer from the pool (freed by its owner with vkFreeCommandBuffers).
+  VkCommandBuffer allocateCommandBuffer() const;
   const DeviceInfo& deviceInfo() const { return deviceInfo_; }
   const RayTracingFunctions& rt() const { return rt_; }
   const VkPhysicalDeviceRayTracingPipelinePropertiesKHR& rayTracingProperties() const {

@@ -160,12 +160,7 @@ Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync)
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
     fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first blit
     vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &blitFinished_), "vkCreateFence");
-    VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    allocateInfo.commandPool = context.commandPool();
-    allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-    allocateInfo.commandBufferCount = 1;
-    vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
-            "vkAllocateCommandBuffers");
+    commands_ = context.allocateCommandBuffer();
     createSwapchain();
     createPalette();
   } catch (...) {

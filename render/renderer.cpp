@@ -195,12 +195,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   createDescriptors();
   createPipelines(compiler, features, scene.exposureProbes);
 
-  VkCommandBufferAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  allocateInfo.commandPool = context.commandPool();
-  allocateInfo.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  allocateInfo.commandBufferCount = 1;
-  vkCheck(vkAllocateCommandBuffers(context.device(), &allocateInfo, &commands_),
-          "vkAllocateCommandBuffers");
+  commands_ = context.allocateCommandBuffer();
   if (context.timestampsSupported()) {
     VkQueryPoolCreateInfo queryInfo{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     queryInfo.queryType = VK_QUERY_TYPE_TIMESTAMP;
