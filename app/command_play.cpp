@@ -331,6 +331,9 @@ class Game {
           presenter_.setVsync(!presenter_.vsync());
           std::printf("vsync %s\n", presenter_.vsync() ? "on" : "off");
           break;
+        case GLFW_KEY_F3:
+          authorOverlay_ = !authorOverlay_;
+          break;
         default:
           break;
       }
@@ -450,6 +453,23 @@ class Game {
     std::fflush(stdout);
   }
 
+  // F3, for level authors: the probe readings the rules use now, and the tick they show.
+  std::string rawProbeValues() const {
+    const auto& readings = simulation_->latestReadings();
+    if (!readings) return "probes: none yet";
+    char text[64];
+    std::string values = "probes of tick " + std::to_string(readings->tick) + ":";
+    for (size_t i = 0; i < readings->focusCoverage.size(); ++i) {
+      std::snprintf(text, sizeof text, " focus%zu %.3f", i, double(readings->focusCoverage[i]));
+      values += text;
+    }
+    for (size_t i = 0; i < readings->exposure.size(); ++i) {
+      std::snprintf(text, sizeof text, " exposure%zu %.3f", i, double(readings->exposure[i]));
+      values += text;
+    }
+    return values;
+  }
+
   void updateTitle(double fps) {
     std::string title = "Sightline | " + level_->name;
     if (fps > 0.0) title += " | " + std::to_string(int(fps + 0.5)) + " fps";
@@ -469,6 +489,7 @@ class Game {
         break;
     }
     if (paused_) title += " | Paused: Esc resumes, F5 restarts, close the window to quit";
+    if (authorOverlay_) title += " | " + rawProbeValues();
     glfwSetWindowTitle(window_, title.c_str());
   }
 
@@ -479,7 +500,8 @@ class Game {
   render::ShaderCompiler& compiler_;
   render::Presenter& presenter_;
   const std::vector<fs::path> levels_;
-  VkExtent2D shownExtent_;  // the swapchain as last reported
+  VkExtent2D shownExtent_;      // the swapchain as last reported
+  bool authorOverlay_ = false;  // F3: raw probe values in the title
   VkPresentModeKHR shownMode_;
   PendingEvents events_;
   // The simulation holds a reference to its level: it goes first.
@@ -589,7 +611,7 @@ int commandPlay(const Options& options) {
               context->deviceInfo().name.c_str());
   std::printf(
       "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause, "
-      "F5 restart, F11 fullscreen, V vsync\n");
+      "F5 restart, F11 fullscreen, V vsync, F3 probe values\n");
   std::fflush(stdout);
 
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
