@@ -10,7 +10,6 @@
 #include <GLFW/glfw3.h>
 
 #include "render/barriers.hpp"
-#include "render/buffer.hpp"
 #include "render/context.hpp"
 #include "render/renderer.hpp"
 #include "render/storage_image.hpp"
@@ -184,23 +183,8 @@ void Presenter::createPalette() {
   palette_ = createImage2D(context_, count, 1, VK_FORMAT_R8G8B8A8_UNORM,
                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                            "hud palette", &paletteMemory_);
-  Buffer staging(context_, sizeof kColours, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
-                 "hud palette upload");
-  staging.write(kColours.data(), sizeof kColours);
-  context_.submitAndWait([&](VkCommandBuffer commands) {
-    imageLayoutBarrier(commands, palette_, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {count, 1, 1};
-    vkCmdCopyBufferToImage(commands, staging.handle(), palette_,
-                           VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    imageLayoutBarrier(commands, palette_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_READ_BIT);
-  });
+  uploadImage2D(context_, palette_, count, 1, kColours.data(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 Presenter::~Presenter() {

@@ -1,6 +1,7 @@
 #include "render/storage_image.hpp"
 
 #include "render/barriers.hpp"
+#include "render/buffer.hpp"
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
@@ -67,6 +68,28 @@ StorageImage::~StorageImage() {
   if (view_) vkDestroyImageView(device_, view_, nullptr);
   if (image_) vkDestroyImage(device_, image_, nullptr);
   if (memory_) vkFreeMemory(device_, memory_, nullptr);
+}
+
+void uploadImage2D(const Context& context, VkImage image, uint32_t width, uint32_t height,
+                   const void* bytes, VkImageLayout finalLayout, VkPipelineStageFlags nextStages,
+                   VkAccessFlags nextAccess) {
+  const VkDeviceSize size = VkDeviceSize(width) * height * 4;
+  Buffer staging(context, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+                 "image upload staging");
+  staging.write(bytes, size);
+  context.submitAndWait([&](VkCommandBuffer commands) {
+    imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_UNDEFINED,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {width, height, 1};
+    vkCmdCopyBufferToImage(commands, staging.handle(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           1, &region);
+    imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, finalLayout,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, nextStages,
+                       nextAccess);
+  });
 }
 
 }  // namespace render

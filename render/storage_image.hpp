@@ -33,6 +33,12 @@ class StorageImage {
 // A device-local 2D image (one mip, one layer) and its memory; throws RenderError.
 VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
                       VkImageUsageFlags usage, const std::string& name, VkDeviceMemory* memory);
+// Fills a whole 2D image (created with TRANSFER_DST usage, contents undefined) with RGBA8
+// `bytes` through a staging buffer, then moves it to `finalLayout` for the stages and accesses
+// that use it next; waits until done.
+void uploadImage2D(const Context& context, VkImage image, uint32_t width, uint32_t height,
+                   const void* bytes, VkImageLayout finalLayout, VkPipelineStageFlags nextStages,
+                   VkAccessFlags nextAccess);
 VkImageView createImageView(const Context& context, VkImage image, VkFormat format,
                             const std::string& name);
 

@@ -1,7 +1,5 @@
 #include "render/texture.hpp"
 
-#include "render/barriers.hpp"
-#include "render/buffer.hpp"
 #include "render/context.hpp"
 #include "render/storage_image.hpp"
 #include "render/vulkan_error.hpp"
@@ -17,23 +15,9 @@ Texture::Texture(const Context& context, const TextureDesc& desc) : device_(cont
   image_ = createImage2D(context, desc.width, desc.height, format,
                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                          "texture " + desc.name, &memory_);
-  Buffer staging(context, desc.rgba.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
-                 "texture staging");
-  staging.write(desc.rgba.data(), desc.rgba.size());
-  context.submitAndWait([&](VkCommandBuffer commands) {
-    imageLayoutBarrier(commands, image_, VK_IMAGE_LAYOUT_UNDEFINED,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {desc.width, desc.height, 1};
-    vkCmdCopyBufferToImage(commands, staging.handle(), image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                           1, &region);
-    imageLayoutBarrier(commands, image_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                       VK_ACCESS_SHADER_READ_BIT);
-  });
+  uploadImage2D(context, image_, desc.width, desc.height, desc.rgba.data(),
+                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_READ_BIT);
   view_ = createImageView(context, image_, format, "texture " + desc.name);
 }
 
