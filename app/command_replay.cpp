@@ -116,8 +116,8 @@ game::Level loadReplayLevel(const game::Replay& replay) {
 }
 
 ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& compiler,
-                       const game::Replay& replay, const Options& options) {
-  const game::Level level = loadReplayLevel(replay);
+                       const game::Replay& replay, const game::Level& level,
+                       const Options& options) {
   sim::Simulation simulation(
       context, compiler, level,
       {replay.width, replay.height, replay.probeEveryTicks, replay.probeLatency});
@@ -225,17 +225,18 @@ int commandReplay(const Options& options) {
   if (options.positional.empty()) throw UsageError("replay: expected replay files");
   if (options.trace && options.positional.size() != 1)
     throw UsageError("replay: --trace takes exactly one replay file");
-  // Every file is read and checked before anything runs.
+  // Every file and its level are read and checked before anything runs.
   std::vector<game::Replay> replays;
+  std::vector<game::Level> levels;
   for (const std::string& file : options.positional) {
     replays.push_back(game::loadReplay(file));
-    loadReplayLevel(replays.back());
+    levels.push_back(loadReplayLevel(replays.back()));
   }
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   int failed = 0;
-  for (const game::Replay& replay : replays) {
-    const ReplayResult result = runReplay(context, compiler, replay, options);
+  for (size_t i = 0; i < replays.size(); ++i) {
+    const ReplayResult result = runReplay(context, compiler, replays[i], levels[i], options);
     if (result.passed) continue;
     ++failed;
     for (const std::string& failure : result.failures) std::printf("  %s\n", failure.c_str());
