@@ -5,26 +5,33 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include "app/commands.hpp"
 #include "app/data_paths.hpp"
+#include "app/key_names.hpp"
 #include "app/session.hpp"
+#include "app/ui_layer.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
+#include "game/level_order.hpp"
 #include "game/progress.hpp"
 #include "game/replay.hpp"
 #include "game/rules.hpp"
 #include "game/settings.hpp"
 #include "game/user_paths.hpp"
 #include "render/context.hpp"
+#include "render/image_io.hpp"
 #include "render/presenter.hpp"
 #include "render/vulkan_error.hpp"
 #include "sim/simulation.hpp"
@@ -44,6 +51,7 @@ constexpr float kStickDegreesPerSecond = 150.0f;
 constexpr float kStickDeadZone = 0.2f;
 constexpr uint32_t kWheelAdjustTicks = 6;  // one wheel notch adjusts for 0.1 s
 constexpr double kTitleSeconds = 0.5;      // how often the title's fps and progress refresh
+constexpr uint32_t kMinRenderSide = 16;    // the smallest internal image side render scale gives
 
 std::string glfwErrorText = "unknown error";
 
@@ -84,6 +92,11 @@ bool readGamepad(GLFWgamepadstate* state) {
   return false;
 }
 
+// The HUD's bars, in fractions of the picture: rows grow upwards from the bottom one.
+constexpr float kBarTop = 0.93f, kBarGap = 0.045f, kBarHeight = 0.025f, kBarWidth = 0.3f;
+constexpr float kGoalBarLeft = 0.02f, kExposureBarLeft = 0.68f;
+constexpr size_t kHudRows = 4;
+
 class Game {
  public:
   Game(const Options& options, const game::Settings& settings, GLFWwindow* window,
@@ -91,6 +104,7 @@ class Game {
        render::Presenter& presenter)
       : options_(options),
         settings_(settings),
+        savedSettings_(settings),
         window_(window),
         context_(context),
         compiler_(compiler),
@@ -101,6 +115,12 @@ class Game {
     glfwSetWindowUserPointer(window_, &events_);
     glfwSetKeyCallback(window_, onKey);
     glfwSetScrollCallback(window_, onScroll);
+    bindKeys();
+    float scaleX = 1.0f, scaleY = 1.0f;
+    glfwGetWindowContentScale(window_, &scaleX, &scaleY);
+    // After the callbacks above: ImGui's GLFW backend calls them after its own.
+    ui_ = std::make_unique<UiLayer>(context_, window_, presenter_, std::max(1.0f, scaleY));
+    for (const fs::path& file : levels_) levelNames_.push_back(levelDisplayName(file));
   }
 
   // Plays until the window closes or --quit-after-ticks; returns the exit status.
@@ -120,35 +140,48 @@ class Game {
       const double now = glfwGetTime();
       const double elapsed = now - lastFrameAt_;
       lastFrameAt_ = now;
+      bool quitting = false;
       if (!paused_) {
         gatherMouseLook();
         runTicks(elapsed);
-        if (options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks) {
-          std::printf("quit after %llu ticks, %llu frames shown (%.1f fps)\n",
-                      static_cast<unsigned long long>(ticksPlayed_),
-                      static_cast<unsigned long long>(framesShown_),
-                      double(framesShown_) / std::max(now - started, 1e-3));
-          break;
-        }
-        advanceAfterOutcome(now);
+        quitting = options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks;
+        if (!quitting) advanceAfterOutcome(now);
       }
+      if (quitting && options_.capture) presenter_.captureNextPresent();
       simulation_->renderPicture();
       const std::vector<render::HudRect> hud =
           options_.hudOff ? std::vector<render::HudRect>{} : hudRects();
-      if (presenter_.present(simulation_->renderer(), hud)) ++framesShown_;
+      ui_->beginFrame();
+      if (!options_.hudOff) drawScreenText(fps_);
+      if (paused_) drawPauseMenu();
+      const render::OverlayDraw overlay = ui_->endFrame();
+      if (presenter_.present(simulation_->renderer(), hud, overlay)) ++framesShown_;
       reportSwapchainChange();
+      if (screenshotRequested_ && !quitting) saveScreenshot();
+      if (quitting) {
+        if (options_.capture) writeCapture();
+        std::printf("quit after %llu ticks, %llu frames shown (%.1f fps)\n",
+                    static_cast<unsigned long long>(ticksPlayed_),
+                    static_cast<unsigned long long>(framesShown_),
+                    double(framesShown_) / std::max(now - started, 1e-3));
+        break;
+      }
+      if (quitRequested_) glfwSetWindowShouldClose(window_, GLFW_TRUE);
       ++framesSinceTitle;
       if (now - titleAt >= kTitleSeconds) {
-        updateTitle(framesSinceTitle / (now - titleAt));
+        fps_ = framesSinceTitle / (now - titleAt);
+        updateTitle(fps_);
         titleAt = now;
         framesSinceTitle = 0;
       }
     }
     finishRecording();
+    saveSettingsIfChanged();
     // The presenter's last blit reads the renderer's image: finish it before either goes.
     vkDeviceWaitIdle(context_.device());
     simulation_.reset();
-    return 0;
+    ui_.reset();
+    return captureFailed_ ? 1 : 0;
   }
 
  private:
@@ -168,19 +201,18 @@ class Game {
       rects.push_back({x1 - kLine, y0, x1, y1, HudColour::White});
     }
     auto bar = [&](float x0, int row, float value, HudColour fill) {
-      constexpr float kWidth = 0.3f, kHeight = 0.025f, kGap = 0.045f;
-      const float y0 = 0.93f - kGap * float(row), y1 = y0 + kHeight;
-      rects.push_back({x0, y0, x0 + kWidth, y1, HudColour::Shade});
+      const float y0 = kBarTop - kBarGap * float(row), y1 = y0 + kBarHeight;
+      rects.push_back({x0, y0, x0 + kBarWidth, y1, HudColour::Shade});
       if (value > 0.0f)
-        rects.push_back({x0, y0, x0 + kWidth * std::clamp(value, 0.0f, 1.0f), y1, fill});
+        rects.push_back({x0, y0, x0 + kBarWidth * std::clamp(value, 0.0f, 1.0f), y1, fill});
     };
     const auto& goals = simulation_->rules().progress();
-    for (size_t i = 0; i < goals.size() && i < 4; ++i)
-      bar(0.02f, int(i), goals[i].progress,
+    for (size_t i = 0; i < goals.size() && i < kHudRows; ++i)
+      bar(kGoalBarLeft, int(i), goals[i].progress,
           goals[i].met ? HudColour::BluishGreen : HudColour::SkyBlue);
     if (const auto& readings = simulation_->latestReadings()) {
-      for (size_t i = 0; i < readings->exposure.size() && i < 4; ++i)
-        bar(0.68f, int(i), readings->exposure[i], HudColour::Orange);
+      for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i)
+        bar(kExposureBarLeft, int(i), readings->exposure[i], HudColour::Orange);
     }
     const game::Outcome outcome = simulation_->outcome();
     if (outcome != game::Outcome::Playing)
@@ -188,6 +220,292 @@ class Game {
           {0.0f, 0.02f, 1.0f, 0.06f,
            outcome == game::Outcome::Won ? HudColour::BluishGreen : HudColour::Vermillion});
     return rects;
+  }
+
+  // ----- key bindings, render size, settings -----
+
+  void bindKeys() {
+    keyCodes_.clear();
+    for (const auto& [action, name] : settings_.keyBindings)
+      keyCodes_[action] = glfwKeyFromName(name);
+  }
+
+  int keyFor(const std::string& action) const {
+    const auto found = keyCodes_.find(action);
+    return found == keyCodes_.end() ? GLFW_KEY_UNKNOWN : found->second;
+  }
+
+  // --size wins; otherwise the window's size (in screen units, so a high-DPI screen does not
+  // quadruple the work) times the render scale: 1280x720 at 0.25 gives 320x180.
+  void chooseRenderSize() {
+    if (options_.sizeGiven) {
+      renderWidth_ = options_.width;
+      renderHeight_ = options_.height;
+      return;
+    }
+    int width = 0, height = 0;
+    glfwGetWindowSize(window_, &width, &height);
+    if (width <= 0 || height <= 0) {  // minimised: the default window's shape
+      width = kWindowWidth;
+      height = kWindowHeight;
+    }
+    renderWidth_ = std::max(kMinRenderSide, uint32_t(std::lround(width * settings_.renderScale)));
+    renderHeight_ = std::max(kMinRenderSide, uint32_t(std::lround(height * settings_.renderScale)));
+  }
+
+  void saveSettingsIfChanged() {
+    if (settings_ == savedSettings_) return;
+    try {
+      game::saveSettings(settings_, game::settingsFile());
+      savedSettings_ = settings_;
+    } catch (const std::exception& error) {
+      std::fprintf(stderr, "settings not saved: %s\n", error.what());
+    }
+  }
+
+  static std::string levelDisplayName(const fs::path& file) {
+    try {
+      return game::loadLevel(file).name;
+    } catch (const std::exception&) {
+      return file.stem().string();  // play says what is wrong with it when it is chosen
+    }
+  }
+
+  // ----- text and menus (Dear ImGui) -----
+
+  static ImU32 colour(uint8_t red, uint8_t green, uint8_t blue) {
+    return IM_COL32(red, green, blue, 255);
+  }
+
+  // Text with a dark drop shadow, readable over bright and dark parts of the picture.
+  static void shadowedText(ImDrawList* list, ImVec2 at, ImU32 textColour, const std::string& text,
+                           float size, float wrapWidth = 0.0f) {
+    ImFont* font = ImGui::GetFont();
+    list->AddText(font, size, ImVec2(at.x + 1.5f, at.y + 1.5f), IM_COL32(0, 0, 0, 220),
+                  text.c_str(), nullptr, wrapWidth);
+    list->AddText(font, size, at, textColour, text.c_str(), nullptr, wrapWidth);
+  }
+
+  static std::string percent(float share) {
+    return std::to_string(int(std::clamp(share, 0.0f, 1.0f) * 100.0f + 0.5f)) + "%";
+  }
+
+  // Level name and hint (top left), fps (top right), a label beside each HUD bar, the outcome,
+  // and with F3 the raw probe readings.
+  void drawScreenText(double fps) {
+    ImDrawList* list = ImGui::GetForegroundDrawList();
+    const render::PictureRect picture = presenter_.pictureRect(renderWidth_, renderHeight_);
+    const float size = ImGui::GetFontSize();
+    const float margin = std::max(6.0f, picture.width * 0.015f);
+    auto at = [&](float x, float y) {
+      return ImVec2(picture.x + x * picture.width, picture.y + y * picture.height);
+    };
+    const ImU32 white = colour(255, 255, 255);
+    const ImU32 green = colour(0, 158, 115), vermillion = colour(213, 94, 0);
+    ImVec2 top(picture.x + margin, picture.y + picture.height * 0.07f);
+    shadowedText(list, top, white, level_->name, size * 1.35f);
+    if (!level_->hint.empty()) {
+      top.y += size * 1.6f;
+      shadowedText(list, top, colour(230, 230, 230), level_->hint, size, picture.width * 0.55f);
+    }
+    const std::string fpsText = std::to_string(int(fps + 0.5)) + " fps";
+    const float fpsWidth = ImGui::CalcTextSize(fpsText.c_str()).x;
+    const ImVec2 topRight = at(1.0f, 0.07f);
+    shadowedText(list, ImVec2(topRight.x - margin - fpsWidth, topRight.y), white, fpsText, size);
+
+    // Beside the bars hudRects() draws: goals on the left, exposure meters on the right.
+    const auto& goals = simulation_->rules().progress();
+    for (size_t i = 0; i < goals.size() && i < kHudRows; ++i) {
+      const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
+      const ImVec2 position = at(kGoalBarLeft + kBarWidth + 0.01f, y);
+      shadowedText(list, ImVec2(position.x, position.y - size / 2), goals[i].met ? green : white,
+                   goals[i].label + "  " + percent(goals[i].progress), size);
+    }
+    if (const auto& readings = simulation_->latestReadings()) {
+      for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i) {
+        const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
+        const std::string text =
+            "sensor " + std::to_string(i + 1) + " lit  " + percent(readings->exposure[i]);
+        const ImVec2 position = at(kExposureBarLeft - 0.01f, y);
+        shadowedText(
+            list, ImVec2(position.x - ImGui::CalcTextSize(text.c_str()).x, position.y - size / 2),
+            white, text, size);
+      }
+    }
+    const game::Outcome outcome = simulation_->outcome();
+    if (outcome != game::Outcome::Playing) {
+      const std::string text = outcome == game::Outcome::Won
+                                   ? "Level complete! The next level follows in a moment."
+                                   : "Lost: " + simulation_->rules().reason() + ". Restarting.";
+      const float big = size * 1.5f;
+      const float width = ImGui::CalcTextSize(text.c_str()).x * 1.5f;
+      shadowedText(list, ImVec2(picture.x + (picture.width - width) / 2, at(0, 0.3f).y),
+                   outcome == game::Outcome::Won ? green : vermillion, text, big);
+    }
+    if (authorOverlay_) drawAuthorOverlay();
+  }
+
+  // F3: what the rules see, for level authors tuning goals.
+  void drawAuthorOverlay() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, display.y * 0.15f), ImGuiCond_Always,
+                            ImVec2(1.0f, 0.0f));
+    ImGui::SetNextWindowBgAlpha(0.7f);
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+        ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoInputs;
+    if (ImGui::Begin("Probe values (F3)", nullptr, flags)) {
+      ImGui::Text("tick %llu, %ux%u", static_cast<unsigned long long>(simulation_->tick()),
+                  renderWidth_, renderHeight_);
+      if (const auto& readings = simulation_->latestReadings()) {
+        ImGui::Text("readings of tick %llu", static_cast<unsigned long long>(readings->tick));
+        for (size_t i = 0; i < readings->focusCoverage.size(); ++i)
+          ImGui::Text("focus %zu coverage  %.4f", i, double(readings->focusCoverage[i]));
+        for (size_t i = 0; i < readings->exposure.size(); ++i)
+          ImGui::Text("exposure %zu  %.4f", i, double(readings->exposure[i]));
+      } else {
+        ImGui::TextUnformatted("no readings yet");
+      }
+      for (const game::GoalProgress& goal : simulation_->rules().progress())
+        ImGui::Text("%s  %.4f%s", goal.label.c_str(), double(goal.progress),
+                    goal.met ? " (met)" : "");
+    }
+    ImGui::End();
+  }
+
+  // Esc: resume, restart, quit; the level list; the settings; a progress reset.
+  void drawPauseMenu() {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always,
+                            ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowSizeConstraints(ImVec2(display.x * 0.4f, 0.0f),
+                                        ImVec2(display.x * 0.9f, display.y * 0.9f));
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove |
+                                   ImGuiWindowFlags_AlwaysAutoResize |
+                                   ImGuiWindowFlags_NoSavedSettings;
+    if (!ImGui::Begin("Paused", nullptr, flags)) {
+      ImGui::End();
+      return;
+    }
+    ImGui::Text("%s", level_->name.c_str());
+    if (ImGui::Button("Resume (Esc)")) resumeRequested_ = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Restart level")) pendingLevel_ = levelFile_;
+    ImGui::SameLine();
+    if (ImGui::Button("Quit")) quitRequested_ = true;
+
+    if (ImGui::CollapsingHeader("Levels", ImGuiTreeNodeFlags_DefaultOpen)) drawLevelList();
+    if (ImGui::CollapsingHeader("Settings")) drawSettings();
+    ImGui::End();
+  }
+
+  void drawLevelList() {
+    std::vector<std::string> order;
+    for (const fs::path& file : levels_) order.push_back(file.filename().string());
+    for (size_t i = 0; i < levels_.size(); ++i) {
+      const bool won = menuProgress_.completed.contains(order[i]);
+      const bool open = game::unlocked(menuProgress_, order, order[i]);
+      const bool current = fs::weakly_canonical(levels_[i]) == fs::weakly_canonical(levelFile_);
+      const std::string label = std::to_string(i + 1) + ". " + levelNames_[i] +
+                                (won    ? "   [won]"
+                                 : open ? ""
+                                        : "   (locked)");
+      ImGui::BeginDisabled(!open);
+      if (ImGui::Selectable(label.c_str(), current)) pendingLevel_ = levels_[i];
+      ImGui::EndDisabled();
+    }
+    if (!confirmReset_) {
+      if (ImGui::Button("Reset progress...")) confirmReset_ = true;
+    } else {
+      ImGui::TextUnformatted("Forget every win and lock all but the first level?");
+      if (ImGui::Button("Yes, reset")) {
+        menuProgress_ = {};
+        try {
+          game::saveProgress(menuProgress_, game::progressFile());
+          std::printf("progress reset\n");
+        } catch (const std::exception& error) {
+          std::fprintf(stderr, "progress not reset: %s\n", error.what());
+        }
+        confirmReset_ = false;
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Keep it")) confirmReset_ = false;
+    }
+  }
+
+  void drawSettings() {
+    ImGui::SliderFloat("Mouse sensitivity", &settings_.mouseSensitivity, 0.01f, 1.0f,
+                       "%.2f degrees per pixel");
+    ImGui::Checkbox("Invert mouse Y", &settings_.invertY);
+    bool levelFov = !settings_.fieldOfViewDegrees;
+    if (ImGui::Checkbox("Each level's own field of view", &levelFov))
+      settings_.fieldOfViewDegrees =
+          levelFov ? std::nullopt : std::optional<float>(level_->camera.verticalFovDegrees);
+    if (settings_.fieldOfViewDegrees)
+      ImGui::SliderFloat("Field of view", &*settings_.fieldOfViewDegrees,
+                         game::kMinFieldOfViewDegrees, game::kMaxFieldOfViewDegrees,
+                         "%.0f degrees (vertical)");
+    ImGui::SliderFloat("Render scale", &settings_.renderScale, 0.1f, 1.0f, "%.2f");
+    settings_.renderScale = std::clamp(settings_.renderScale, 0.1f, 1.0f);
+    if (ImGui::Checkbox("Vsync (V)", &settings_.vsync)) presenter_.setVsync(settings_.vsync);
+    if (settings_.fieldOfViewDegrees != activeFov_ || settings_.renderScale != activeScale_) {
+      ImGui::TextUnformatted("Field of view and render scale apply when a level starts.");
+      if (ImGui::Button("Apply now (restarts the level)")) pendingLevel_ = levelFile_;
+    }
+    ImGui::Text("Picture: %ux%u, scaled to the window", renderWidth_, renderHeight_);
+
+    ImGui::Separator();
+    ImGui::TextUnformatted("Keys");
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_SizingFixedFit)) {
+      for (const auto& [action, key] : settings_.keyBindings) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(action.c_str());
+        ImGui::TableNextColumn();
+        const bool waiting = rebinding_ && *rebinding_ == action;
+        const std::string label =
+            (waiting ? std::string("press a key (Esc keeps it)") : key) + "##" + action;
+        if (ImGui::Button(label.c_str())) rebinding_ = action;
+      }
+      ImGui::EndTable();
+    }
+    if (ImGui::Button("Default keys")) {
+      settings_.keyBindings = game::Settings::defaultKeyBindings();
+      bindKeys();
+    }
+  }
+
+  // --capture: the window's image of the last frame, as shown, as a PNG.
+  void writeCapture() {
+    const std::optional<render::Rgba8Image> image = presenter_.takeCapture();
+    if (!image) {
+      std::fprintf(stderr, "--capture: no frame was shown to capture (minimised window?)\n");
+      captureFailed_ = true;
+      return;
+    }
+    render::writePng(*options_.capture, *image);
+    std::printf("captured the window (%ux%u) at tick %llu to %s\n", image->width, image->height,
+                static_cast<unsigned long long>(simulation_->tick()), options_.capture->c_str());
+  }
+
+  // F12: the window as shown, in dataDirectory()/screenshots.
+  void saveScreenshot() {
+    const std::optional<render::Rgba8Image> image = presenter_.takeCapture();
+    if (!image) return;  // nothing shown yet (minimised): the capture waits for the next frame
+    screenshotRequested_ = false;
+    const fs::path directory = game::dataDirectory() / "screenshots";
+    std::error_code error;
+    fs::create_directories(directory, error);
+    char name[64];
+    const std::time_t now = std::time(nullptr);
+    std::strftime(name, sizeof name, "sightline-%Y%m%d-%H%M%S.png", std::localtime(&now));
+    try {
+      render::writePng(directory / name, *image);
+      std::printf("screenshot saved to %s\n", (directory / name).c_str());
+    } catch (const std::exception& failure) {
+      std::fprintf(stderr, "screenshot not saved: %s\n", failure.what());
+    }
+    std::fflush(stdout);
   }
 
   // A won level unlocks the next one (progress.json); a failed save is said, not fatal.
@@ -208,8 +526,9 @@ class Game {
     game::Replay replay;
     replay.file = fs::absolute(*options_.record);
     replay.level = fs::absolute(levelFile_);
-    replay.width = options_.width;
-    replay.height = options_.height;
+    replay.width = renderWidth_;
+    replay.height = renderHeight_;
+    replay.verticalFovDegrees = settings_.fieldOfViewDegrees;
     sim::SimulationOptions defaults;
     replay.probeEveryTicks = defaults.probeEveryTicks;
     replay.probeLatency = defaults.probeLatency;
@@ -245,16 +564,20 @@ class Game {
     simulation_.reset();
     level_ = std::move(level);
     levelFile_ = file;
+    chooseRenderSize();
+    activeFov_ = settings_.fieldOfViewDegrees;
+    activeScale_ = settings_.renderScale;
     sim::SimulationOptions simulationOptions;
-    simulationOptions.width = options_.width;
-    simulationOptions.height = options_.height;
+    simulationOptions.width = renderWidth_;
+    simulationOptions.height = renderHeight_;
+    simulationOptions.verticalFovDegrees = settings_.fieldOfViewDegrees;
     simulation_ =
         std::make_unique<sim::Simulation>(context_, compiler_, *level_, simulationOptions);
     accumulator_ = 0.0;
     lastFrameAt_ = glfwGetTime();  // loading time is not play time
     outcomeAt_ = -1.0;
-    std::printf("playing %s (%s) at %ux%u\n", level_->name.c_str(), file.c_str(), options_.width,
-                options_.height);
+    std::printf("playing %s (%s) at %ux%u\n", level_->name.c_str(), file.c_str(), renderWidth_,
+                renderHeight_);
     std::fflush(stdout);
     updateTitle(0.0);
   }
@@ -287,6 +610,16 @@ class Game {
 
   void setPaused(bool paused) {
     paused_ = paused;
+    rebinding_.reset();
+    confirmReset_ = false;
+    if (paused) {
+      const game::ProgressLoad loaded = game::loadProgress(game::progressFile());
+      for (const std::string& message : loaded.messages)
+        std::fprintf(stderr, "%s\n", message.c_str());
+      menuProgress_ = loaded.progress;
+    } else {
+      saveSettingsIfChanged();
+    }
     // Playing captures the mouse for looking; paused gives it back.
     glfwSetInputMode(window_, GLFW_CURSOR, paused ? GLFW_CURSOR_NORMAL : GLFW_CURSOR_DISABLED);
     if (!paused && glfwRawMouseMotionSupported())
@@ -311,28 +644,59 @@ class Game {
   }
 
   void handlePresses() {
+    // What the menu chose last frame, now that no frame is being built.
+    if (pendingLevel_) {
+      const fs::path file = *pendingLevel_;
+      pendingLevel_.reset();
+      try {
+        load(file);
+        setPaused(false);
+      } catch (const game::LevelError& error) {
+        std::fprintf(stderr, "%s\n(keeping the level as it was)\n", error.what());
+      }
+    }
+    if (resumeRequested_) {
+      resumeRequested_ = false;
+      setPaused(false);
+    }
     GLFWgamepadstate pad{};
     const bool hasPad = readGamepad(&pad);
     const bool startPressed = hasPad && pad.buttons[GLFW_GAMEPAD_BUTTON_START] && !startWasDown_;
     startWasDown_ = hasPad && pad.buttons[GLFW_GAMEPAD_BUTTON_START];
     if (startPressed) setPaused(!paused_);
     for (int key : events_.keysPressed) {
+      if (rebinding_) {  // the menu waits for the key to bind; Escape cancels
+        if (key != GLFW_KEY_ESCAPE && !keyNameFromGlfw(key).empty()) {
+          settings_.keyBindings[*rebinding_] = keyNameFromGlfw(key);
+          bindKeys();
+        }
+        rebinding_.reset();
+        continue;
+      }
+      if (key == keyFor("pause")) {
+        setPaused(!paused_);
+        continue;
+      }
+      if (key == keyFor("restart")) {
+        restart();
+        continue;
+      }
+      if (key == keyFor("fullscreen")) {
+        toggleFullscreen();
+        continue;
+      }
       switch (key) {
-        case GLFW_KEY_ESCAPE:
-          setPaused(!paused_);
-          break;
-        case GLFW_KEY_F5:
-          restart();
-          break;
-        case GLFW_KEY_F11:
-          toggleFullscreen();
-          break;
         case GLFW_KEY_V:
           presenter_.setVsync(!presenter_.vsync());
+          settings_.vsync = presenter_.vsync();
           std::printf("vsync %s\n", presenter_.vsync() ? "on" : "off");
           break;
         case GLFW_KEY_F3:
           authorOverlay_ = !authorOverlay_;
+          break;
+        case GLFW_KEY_F12:
+          screenshotRequested_ = true;
+          presenter_.captureNextPresent();
           break;
         default:
           break;
@@ -359,13 +723,16 @@ class Game {
 
   // What is held now, from the keyboard and a gamepad; look comes separately.
   game::TickInput heldInput() const {
-    auto down = [&](int key) { return glfwGetKey(window_, key) == GLFW_PRESS; };
+    auto down = [&](const char* action) {
+      const int key = keyFor(action);
+      return key != GLFW_KEY_UNKNOWN && glfwGetKey(window_, key) == GLFW_PRESS;
+    };
     game::TickInput input;
-    input.move = {float(down(GLFW_KEY_D)) - float(down(GLFW_KEY_A)),
-                  float(down(GLFW_KEY_W)) - float(down(GLFW_KEY_S))};
-    input.jump = down(GLFW_KEY_SPACE);
-    input.interact = down(GLFW_KEY_E);
-    input.adjust = float(down(GLFW_KEY_R)) - float(down(GLFW_KEY_Q));
+    input.move = {float(down("right")) - float(down("left")),
+                  float(down("forward")) - float(down("back"))};
+    input.jump = down("jump");
+    input.interact = down("interact");
+    input.adjust = float(down("adjust_up")) - float(down("adjust_down"));
     GLFWgamepadstate pad{};
     if (readGamepad(&pad)) {
       // GLFW's stick y grows downwards.
@@ -494,7 +861,8 @@ class Game {
   }
 
   const Options& options_;
-  const game::Settings& settings_;
+  game::Settings settings_;       // as the menu changes them
+  game::Settings savedSettings_;  // as settings.json holds them
   GLFWwindow* window_;
   const render::Context& context_;
   render::ShaderCompiler& compiler_;
@@ -522,6 +890,21 @@ class Game {
   bool startWasDown_ = false;
   int windowedX_ = 0, windowedY_ = 0, windowedWidth_ = kWindowWidth,
       windowedHeight_ = kWindowHeight;
+  std::map<std::string, int> keyCodes_;   // action -> GLFW key, from the settings
+  std::unique_ptr<UiLayer> ui_;           // text and menus
+  std::vector<std::string> levelNames_;   // of levels_, for the menu
+  std::optional<std::string> rebinding_;  // the action waiting for its new key
+  std::optional<fs::path> pendingLevel_;  // chosen in the menu; loaded before the next frame
+  bool resumeRequested_ = false;
+  bool quitRequested_ = false;
+  bool confirmReset_ = false;
+  bool captureFailed_ = false;
+  bool screenshotRequested_ = false;
+  game::Progress menuProgress_;  // read when the menu opens
+  double fps_ = 0.0;
+  uint32_t renderWidth_ = 320, renderHeight_ = 180;  // the simulation's picture
+  std::optional<float> activeFov_;                   // what the current level started with
+  float activeScale_ = 0.0f;
 };
 
 // GLFW's library state, ended on every path out.
@@ -546,6 +929,8 @@ fs::path firstUnwonLevel(const std::vector<fs::path>& levels) {
 }
 
 int commandPlay(const Options& options) {
+  if (options.capture && options.quitAfterTicks == 0)
+    throw UsageError("play: --capture needs --quit-after-ticks N (the tick whose frame it saves)");
   if (options.resetProgress) {
     game::saveProgress({}, game::progressFile());
     std::printf("progress reset: every level but the first is locked again\n");
@@ -581,8 +966,10 @@ int commandPlay(const Options& options) {
   if (!glfwVulkanSupported()) return fallBack("GLFW found no Vulkan loader: " + glfwErrorText);
   glfwWindowHint(GLFW_CLIENT_API, GLFW_NO_API);  // Vulkan draws, not OpenGL
   glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+  const auto [windowWidth, windowHeight] =
+      options.windowSize.value_or(std::pair<uint32_t, uint32_t>(kWindowWidth, kWindowHeight));
   std::unique_ptr<GLFWwindow, WindowDeleter> window(
-      glfwCreateWindow(kWindowWidth, kWindowHeight, "Sightline", nullptr, nullptr));
+      glfwCreateWindow(int(windowWidth), int(windowHeight), "Sightline", nullptr, nullptr));
   if (!window) return fallBack("glfwCreateWindow failed: " + glfwErrorText);
 
   uint32_t extensionCount = 0;
@@ -598,7 +985,7 @@ int commandPlay(const Options& options) {
   try {
     context = std::make_unique<render::Context>(contextSettings);
     presenter =
-        std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync);
+        std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync, true);
   } catch (const render::RenderError& error) {
     presenter.reset();
     context.reset();
@@ -610,8 +997,9 @@ int commandPlay(const Options& options) {
               render::Presenter::presentModeName(presenter->presentMode()),
               context->deviceInfo().name.c_str());
   std::printf(
-      "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause, "
-      "F5 restart, F11 fullscreen, V vsync, F3 probe values\n");
+      "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause "
+      "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F3 probe values, "
+      "F12 screenshot\n");
   std::fflush(stdout);
 
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());

@@ -118,9 +118,9 @@ game::Level loadReplayLevel(const game::Replay& replay) {
 ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& compiler,
                        const game::Replay& replay, const game::Level& level,
                        const Options& options) {
-  sim::Simulation simulation(
-      context, compiler, level,
-      {replay.width, replay.height, replay.probeEveryTicks, replay.probeLatency});
+  sim::Simulation simulation(context, compiler, level,
+                             {replay.width, replay.height, replay.probeEveryTicks,
+                              replay.probeLatency, replay.verticalFovDegrees});
   std::optional<TraceWriter> trace;
   if (options.trace) trace.emplace(*options.trace, simulation);
   ReplayResult result;

@@ -41,6 +41,9 @@ options:
   --hud-off           play: no heads-up display (focus frame, goal bars, exposure meters)
   --record FILE.json  play: save the first level's run as a replay (until won, lost or quit)
   --reset-progress    play: forget which levels were won
+  --window WxH        play: the window's size (default 1280x720)
+  --capture FILE.png  play, with --quit-after-ticks: save the window's last image as the
+                      swapchain holds it (picture, HUD and text)
 )";
 
 namespace {
@@ -57,11 +60,13 @@ uint32_t parseCount(const std::string& option, const std::string& text, uint32_t
                    std::to_string(high) + ", got '" + text + "'");
 }
 
-void parseSize(const std::string& text, uint32_t* width, uint32_t* height) {
+void parseSize(const std::string& option, const std::string& text, uint32_t* width,
+               uint32_t* height) {
   const size_t x = text.find('x');
-  if (x == std::string::npos) throw UsageError("--size: expected WIDTHxHEIGHT, got '" + text + "'");
-  *width = parseCount("--size width", text.substr(0, x), 1, 16384);
-  *height = parseCount("--size height", text.substr(x + 1), 1, 16384);
+  if (x == std::string::npos)
+    throw UsageError(option + ": expected WIDTHxHEIGHT, got '" + text + "'");
+  *width = parseCount(option + " width", text.substr(0, x), 1, 16384);
+  *height = parseCount(option + " height", text.substr(x + 1), 1, 16384);
 }
 
 }  // namespace
@@ -77,7 +82,7 @@ Options parseOptions(int argc, char** argv) {
       return argv[++i];
     };
     if (argument == "--size") {
-      parseSize(value(), &options.width, &options.height);
+      parseSize("--size", value(), &options.width, &options.height);
       options.sizeGiven = true;
     } else if (argument == "--out") {
       options.out = value();
@@ -120,6 +125,12 @@ Options parseOptions(int argc, char** argv) {
       options.hudOff = true;
     } else if (argument == "--reset-progress") {
       options.resetProgress = true;
+    } else if (argument == "--window") {
+      uint32_t width = 0, height = 0;
+      parseSize("--window", value(), &width, &height);
+      options.windowSize = {width, height};
+    } else if (argument == "--capture") {
+      options.capture = value();
     } else if (argument == "--record") {
       options.record = value();
     } else if (argument == "--trace") {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/scene_desc.hpp"
@@ -40,6 +41,8 @@ struct Options {
   bool hudOff = false;          // play: no heads-up display over the picture
   std::optional<std::filesystem::path> record;  // play: write the first level's run as a replay
   bool resetProgress = false;                   // play: lock every level but the first again
+  std::optional<std::pair<uint32_t, uint32_t>> windowSize;  // play: --window WxH
+  std::optional<std::filesystem::path> capture;  // play: the last frame's window image (PNG)
 };
 
 // Throws UsageError naming the option and what was expected.

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "game/json_error_sax.hpp"
 #include "game/json_positions.hpp"
 
 namespace game {
@@ -17,6 +18,9 @@ namespace {
 
 constexpr uint64_t kMaxTicks = 60ull * 60 * 60;  // an hour of play
 constexpr size_t kMaxReplayBytes = 16u << 20;
+// The player's field of view in a replay: the range a level's camera may have.
+constexpr float kMinVerticalFovDegrees = 1.0f;
+constexpr float kMaxVerticalFovDegrees = 179.0f;
 
 class ReplayParser {
  public:
@@ -32,12 +36,14 @@ class ReplayParser {
       const SourcePosition at = positionOfParseError(text_, error.byte);
       throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
                         std::to_string(at.column) + ": invalid JSON");
+    } catch (const Json::out_of_range&) {
+      failNumberTooLarge();
     }
     positions_ = JsonPositions::scan(text_);
     if (!root.is_object()) fail("", "expected an object");
     checkKeys(root, "",
-              {"replay", "level", "size", "seed", "probe_every_ticks", "probe_latency", "ticks",
-               "input", "expect"});
+              {"replay", "level", "size", "seed", "vertical_fov_degrees", "probe_every_ticks",
+               "probe_latency", "ticks", "input", "expect"});
     require(root, "", "replay");
     if (!root["replay"].is_number_integer() || root["replay"].get<int64_t>() != 1)
       fail("/replay", "unsupported replay format " + root["replay"].dump() +
@@ -58,6 +64,9 @@ class ReplayParser {
     }
     if (root.contains("seed"))
       replay.seed = uint32_t(readInteger(root["seed"], "/seed", 0, 1u << 31));
+    if (root.contains("vertical_fov_degrees"))
+      replay.verticalFovDegrees = readNumber(root["vertical_fov_degrees"], "/vertical_fov_degrees",
+                                             kMinVerticalFovDegrees, kMaxVerticalFovDegrees);
     if (root.contains("probe_every_ticks"))
       replay.probeEveryTicks =
           uint32_t(readInteger(root["probe_every_ticks"], "/probe_every_ticks", 1, 60));
@@ -71,6 +80,27 @@ class ReplayParser {
   }
 
  private:
+  // Json::parse reports a number too large for a double (1e400) as out_of_range, without a
+  // position; a SAX pass finds the number.
+  [[noreturn]] void failNumberTooLarge() const {
+    struct FirstError : JsonErrorOnlySax<Json> {
+      std::size_t end = 0;
+      std::string token;
+      bool parse_error(std::size_t position, const std::string& last,
+                       const nlohmann::detail::exception&) override {
+        end = position;
+        token = last;
+        return false;
+      }
+    } error;
+    Json::sax_parse(text_, &error);
+    const SourcePosition at = positionOfOffset(
+        text_, error.end >= error.token.size() ? error.end - error.token.size() : 0);
+    throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
+                      std::to_string(at.column) + ": invalid JSON: the number " + error.token +
+                      " is too large to represent");
+  }
+
   [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
     const SourcePosition at = positions_.valueAt(pointer);
     const std::string path = positions_.dottedPath(pointer);
@@ -354,6 +384,7 @@ std::string replayToJson(const Replay& replay) {
   root["level"] = replay.level.lexically_relative(replay.file.parent_path()).generic_string();
   root["size"] = {replay.width, replay.height};
   root["seed"] = replay.seed;
+  if (replay.verticalFovDegrees) root["vertical_fov_degrees"] = *replay.verticalFovDegrees;
   root["probe_every_ticks"] = replay.probeEveryTicks;
   root["probe_latency"] = replay.probeLatency;
   root["ticks"] = replay.ticks;

@@ -76,6 +76,8 @@ struct Replay {
   std::string levelPlace;       // "file:line:col" of the level path, for errors about it
   uint32_t width = 64, height = 36;
   uint32_t seed = 0;
+  // The player's field of view when it differs from the level's camera (a play setting).
+  std::optional<float> verticalFovDegrees;
   uint32_t probeEveryTicks = 4;    // k: a probe frame after every k-th tick
   uint32_t probeLatency = 2;       // L: its readings reach the rules L probe frames later
   uint64_t ticks = 600;            // how long it runs

@@ -56,8 +56,13 @@ class SettingsReader {
     readNumber("mouse_sensitivity", kMinMouseSensitivity, LowerBound::exclusive,
                kMaxMouseSensitivity, settings.mouseSensitivity);
     readBoolean("invert_y", settings.invertY);
-    readNumber("field_of_view_degrees", kMinFieldOfViewDegrees, LowerBound::inclusive,
-               kMaxFieldOfViewDegrees, settings.fieldOfViewDegrees);
+    // null (the default) keeps each level's own camera field of view.
+    if (const Json* fov = member("field_of_view_degrees"); fov && !fov->is_null()) {
+      float degrees = 0.0f;
+      if (readNumber("field_of_view_degrees", kMinFieldOfViewDegrees, LowerBound::inclusive,
+                     kMaxFieldOfViewDegrees, degrees, "null (the level's)"))
+        settings.fieldOfViewDegrees = degrees;
+    }
     readNumber("render_scale", kMinRenderScale, LowerBound::exclusive, kMaxRenderScale,
                settings.renderScale);
     readBoolean("vsync", settings.vsync);
@@ -71,22 +76,25 @@ class SettingsReader {
     return found == file_.root().end() ? nullptr : &*found;
   }
 
-  // Leaves `value` (the default) alone unless the file holds a number in range.
-  void readNumber(const std::string& key, float min, LowerBound lowerBound, float max,
-                  float& value) {
+  // Leaves `value` (the default) alone unless the file holds a number in range; returns
+  // whether it read one. `defaultText` names the default in the message (else `value`).
+  bool readNumber(const std::string& key, float min, LowerBound lowerBound, float max, float& value,
+                  const std::string& defaultText = "") {
     const Json* json = member(key);
-    if (!json) return;
+    if (!json) return false;
     const bool minInclusive = lowerBound == LowerBound::inclusive;
     const bool aboveMin = json->is_number() &&
                           (minInclusive ? json->get<double>() >= min : json->get<double>() > min);
     if (aboveMin && json->get<double>() <= max) {
       value = json->get<float>();
-      return;
+      return true;
     }
     const std::string range =
         std::string(minInclusive ? "[" : "(") + formatFloat(min) + ", " + formatFloat(max) + "]";
     file_.reportValue("/" + key, "expected a number in " + range + ", got " + describeJson(*json) +
-                                     "; using the default " + formatFloat(value));
+                                     "; using the default " +
+                                     (defaultText.empty() ? formatFloat(value) : defaultText));
+    return false;
   }
 
   void readBoolean(const std::string& key, bool& value) {
@@ -164,7 +172,9 @@ void saveSettings(const Settings& settings, const fs::path& file) {
   json[kVersionKey] = kSettingsVersion;
   json["mouse_sensitivity"] = asShortestDouble(settings.mouseSensitivity);
   json["invert_y"] = settings.invertY;
-  json["field_of_view_degrees"] = asShortestDouble(settings.fieldOfViewDegrees);
+  json["field_of_view_degrees"] = settings.fieldOfViewDegrees
+                                      ? Json(asShortestDouble(*settings.fieldOfViewDegrees))
+                                      : Json(nullptr);
   json["render_scale"] = asShortestDouble(settings.renderScale);
   json["vsync"] = settings.vsync;
   json["key_bindings"] = Json::object();

@@ -3,6 +3,7 @@
 // atomically. docs: README.md, "Settings and progress".
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,8 +12,9 @@ namespace game {
 struct Settings {
   float mouseSensitivity = 0.1f;  // degrees of turn per pixel of mouse movement
   bool invertY = false;
-  float fieldOfViewDegrees = 70.0f;  // vertical
-  float renderScale = 0.25f;         // internal resolution as a fraction of the window, (0.1, 1]
+  // Vertical; unset (null in the file): each level's own camera field of view.
+  std::optional<float> fieldOfViewDegrees;
+  float renderScale = 0.25f;  // internal resolution as a fraction of the window, (0.1, 1]
   bool vsync = true;
   // Action -> GLFW key name without the GLFW_KEY_ prefix ("W", "SPACE", "F5").
   std::map<std::string, std::string> keyBindings = defaultKeyBindings();

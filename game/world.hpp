@@ -51,6 +51,8 @@ class World {
   float pitchDegrees() const { return player_.pitchDegrees(); }
   bool grounded() const { return player_.grounded(); }
   render::CameraDesc camera() const;  // the eye, with the level's field of view
+  // The player's own field of view instead of the level's (a play setting; replays keep it).
+  void setVerticalFovDegrees(float degrees) { verticalFovDegrees_ = degrees; }
 
   // The interactable under the crosshair (the nearest surface within reach belongs to it).
   std::optional<uint32_t> pickedEntity() const { return picked_; }

@@ -131,8 +131,8 @@ const char* Presenter::presentModeName(VkPresentModeKHR mode) {
   }
 }
 
-Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync)
-    : context_(context), window_(window), vsync_(vsync) {
+Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync, bool overlayPass)
+    : context_(context), window_(window), vsync_(vsync), wantsOverlayPass_(overlayPass) {
   const VkResult surfaceResult =
       glfwCreateWindowSurface(context.instance(), window, nullptr, &surface_);
   if (surfaceResult != VK_SUCCESS) {
@@ -199,6 +199,9 @@ void Presenter::release() {
   destroySwapchainResources();
   if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
   swapchain_ = VK_NULL_HANDLE;
+  if (overlayPass_) vkDestroyRenderPass(device, overlayPass_, nullptr);
+  overlayPass_ = VK_NULL_HANDLE;
+  captureBuffer_ = Buffer();
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   commands_ = VK_NULL_HANDLE;
   if (blitFinished_) vkDestroyFence(device, blitFinished_, nullptr);
@@ -220,9 +223,56 @@ void Presenter::setVsync(bool vsync) {
 }
 
 void Presenter::destroySwapchainResources() {
-  for (VkSemaphore semaphore : blitDone_) vkDestroySemaphore(context_.device(), semaphore, nullptr);
+  const VkDevice device = context_.device();
+  for (VkFramebuffer framebuffer : framebuffers_)
+    vkDestroyFramebuffer(device, framebuffer, nullptr);
+  framebuffers_.clear();
+  for (VkImageView view : views_) vkDestroyImageView(device, view, nullptr);
+  views_.clear();
+  for (VkSemaphore semaphore : blitDone_) vkDestroySemaphore(device, semaphore, nullptr);
   blitDone_.clear();
   images_.clear();
+}
+
+void Presenter::createOverlayPass() {
+  VkAttachmentDescription attachment{};
+  attachment.format = format_;
+  attachment.samples = VK_SAMPLE_COUNT_1_BIT;
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // the picture and HUD are already there
+  attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+  attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  attachment.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  attachment.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
+  VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = 1;
+  subpass.pColorAttachments = &colour;
+  // After the blits' writes; before presentation (which the semaphore orders).
+  std::array<VkSubpassDependency, 2> dependencies{};
+  dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[0].dstSubpass = 0;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  dependencies[0].srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].dstAccessMask =
+      VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].srcSubpass = 0;
+  dependencies[1].dstSubpass = VK_SUBPASS_EXTERNAL;
+  dependencies[1].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[1].srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+  dependencies[1].dstStageMask = VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT;
+  dependencies[1].dstAccessMask = 0;
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = 1;
+  info.pAttachments = &attachment;
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  info.dependencyCount = uint32_t(dependencies.size());
+  info.pDependencies = dependencies.data();
+  vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &overlayPass_),
+          "vkCreateRenderPass");
 }
 
 void Presenter::createSwapchain() {
@@ -232,6 +282,10 @@ void Presenter::createSwapchain() {
           "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
   if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
     throw RenderError("the window surface's images cannot be blit targets");
+  if (wantsOverlayPass_ &&
+      !(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
+    throw RenderError("the window surface's images cannot be drawn to");
+  canCapture_ = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
   const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_);
   presentMode_ = choosePresentMode(physicalDevice, surface_, vsync_);
 
@@ -266,8 +320,10 @@ void Presenter::createSwapchain() {
   info.imageColorSpace = surfaceFormat.colorSpace;
   info.imageExtent = extent;
   info.imageArrayLayers = 1;
-  // Cleared and blitted to, never drawn: transfer usage is all it needs.
+  // Cleared and blitted to; drawn to by the overlay; copied from for captures.
   info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (wantsOverlayPass_) info.imageUsage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  if (canCapture_) info.imageUsage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = capabilities.currentTransform;
   info.compositeAlpha = compositeAlpha;
@@ -280,8 +336,13 @@ void Presenter::createSwapchain() {
   destroySwapchainResources();
   if (swapchain_) vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
   swapchain_ = swapchain;
+  if (overlayPass_ && surfaceFormat.format != format_) {
+    // The overlay's pipeline was made for the old format's pass.
+    throw RenderError("the window surface changed its format; restart the game");
+  }
   format_ = surfaceFormat.format;
   extent_ = extent;
+  minImageCount_ = std::max(2u, capabilities.minImageCount);
 
   uint32_t count = 0;
   vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, nullptr),
@@ -290,6 +351,23 @@ void Presenter::createSwapchain() {
   vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, images_.data()),
           "vkGetSwapchainImagesKHR");
   for (uint32_t i = 0; i < count; ++i) blitDone_.push_back(createSemaphore(context_.device()));
+  if (wantsOverlayPass_) {
+    if (!overlayPass_) createOverlayPass();
+    for (VkImage image : images_) {
+      views_.push_back(createImageView(context_, image, format_, "swapchain image"));
+      VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+      framebufferInfo.renderPass = overlayPass_;
+      framebufferInfo.attachmentCount = 1;
+      framebufferInfo.pAttachments = &views_.back();
+      framebufferInfo.width = extent_.width;
+      framebufferInfo.height = extent_.height;
+      framebufferInfo.layers = 1;
+      VkFramebuffer framebuffer = VK_NULL_HANDLE;
+      vkCheck(vkCreateFramebuffer(context_.device(), &framebufferInfo, nullptr, &framebuffer),
+              "vkCreateFramebuffer");
+      framebuffers_.push_back(framebuffer);
+    }
+  }
   swapchainStale_ = false;
 }
 
@@ -301,7 +379,45 @@ void Presenter::recreateSwapchain() {
   createSwapchain();
 }
 
-bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud) {
+PictureRect Presenter::pictureRect(uint32_t pictureWidth, uint32_t pictureHeight) const {
+  VkOffset3D low{}, high{};
+  fitRectangle(pictureWidth, pictureHeight, extent_, &low, &high);
+  return {low.x, low.y, high.x - low.x, high.y - low.y};
+}
+
+void Presenter::captureNextPresent() {
+  if (!canCapture_) throw RenderError("the window surface's images cannot be copied from");
+  captureRequested_ = true;
+}
+
+void Presenter::collectCapture() {
+  if (captureInFlight_) {
+    vkCheck(vkWaitForFences(context_.device(), 1, &blitFinished_, VK_TRUE, UINT64_MAX),
+            "vkWaitForFences");
+    Rgba8Image image;
+    image.width = extent_.width;
+    image.height = extent_.height;
+    image.pixels.resize(size_t(image.width) * image.height * 4);
+    captureBuffer_.read(image.pixels.data(), image.pixels.size());
+    const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    for (size_t i = 0; i < image.pixels.size(); i += 4) {
+      if (bgra) std::swap(image.pixels[i], image.pixels[i + 2]);
+      image.pixels[i + 3] = 255;  // the window is opaque
+    }
+    capture_ = std::move(image);
+    captureInFlight_ = false;
+  }
+}
+
+std::optional<Rgba8Image> Presenter::takeCapture() {
+  collectCapture();
+  std::optional<Rgba8Image> taken = std::move(capture_);
+  capture_.reset();
+  return taken;
+}
+
+bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
+                        const OverlayDraw& overlay) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   if (width <= 0 || height <= 0) return false;  // minimised: nothing to show
@@ -309,6 +425,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud) 
     recreateSwapchain();
 
   const VkDevice device = context_.device();
+  collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
   vkCheck(vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   uint32_t imageIndex = 0;
   const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAcquired_,
@@ -325,7 +442,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud) 
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordBlit(commands_, renderer, images_[imageIndex], hud);
+  recordBlit(commands_, renderer, imageIndex, hud, overlay);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
 
   // The clear and blit write the image at the transfer stage: wait for the acquire there.
@@ -356,9 +473,35 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud) 
   return true;
 }
 
-void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target,
-                           std::span<const HudRect> hud) {
+void Presenter::recordCapture(VkCommandBuffer commands, VkImage target) {
+  const VkDeviceSize bytes = VkDeviceSize(extent_.width) * extent_.height * 4;
+  if (captureBuffer_.size() != bytes)
+    captureBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                            "window capture");
+  // After the blits or the overlay pass, which both leave the image ready to present.
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {extent_.width, extent_.height, 1};
+  vkCmdCopyImageToBuffer(commands, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         captureBuffer_.handle(), 1, &region);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+  captureRequested_ = false;
+  captureInFlight_ = true;
+}
+
+void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+                           std::span<const HudRect> hud, const OverlayDraw& overlay) {
   const VkImage source = renderer.outputImage();
+  const VkImage target = images_[imageIndex];
   // The renderer's passes (and a readback copy with its layout changes) wrote the image in
   // earlier submits; make all of it visible to this blit's read.
   imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL,
@@ -426,10 +569,22 @@ void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, V
     }
   }
 
-  // Presentation needs no access mask: the semaphore signal orders it after the blit.
-  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                     VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+  if (overlay && overlayPass_) {
+    // The pass's dependencies order it after the blits and leave the image ready to present.
+    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+    begin.renderPass = overlayPass_;
+    begin.framebuffer = framebuffers_[imageIndex];
+    begin.renderArea.extent = extent_;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    overlay(commands);
+    vkCmdEndRenderPass(commands);
+  } else {
+    // Presentation needs no access mask: the semaphore signal orders it after the blit.
+    imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+  }
+  if (captureRequested_) recordCapture(commands, target);
   // Back to GENERAL, as the renderer expects, before anything later touches the image.
   imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                      VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,

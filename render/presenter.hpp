@@ -5,10 +5,15 @@
 // swapchain prefers a UNORM format: a blit into an _SRGB image would encode a second time.
 // The blit keeps the image's aspect ratio and fills the rest of the window with black.
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include <vulkan/vulkan.h>
+
+#include "render/buffer.hpp"
+#include "render/image_io.hpp"
 
 struct GLFWwindow;
 
@@ -28,18 +33,44 @@ struct HudRect {
   HudColour colour;
 };
 
+// Draws over the picture and the HUD, inside the presenter's overlay render pass (the menus
+// and text of Dear ImGui).
+using OverlayDraw = std::function<void(VkCommandBuffer)>;
+
+// Where the picture lands in the window, in window pixels.
+struct PictureRect {
+  int32_t x = 0, y = 0, width = 0, height = 0;
+};
+
 class Presenter {
  public:
   // The context must have been made with ContextOptions::presentation and the instance
-  // extensions glfwGetRequiredInstanceExtensions names. Throws RenderError.
-  Presenter(const Context& context, GLFWwindow* window, bool vsync);
+  // extensions glfwGetRequiredInstanceExtensions names. With `overlayPass`, the swapchain
+  // images can also be drawn to through overlayRenderPass(). Throws RenderError.
+  Presenter(const Context& context, GLFWwindow* window, bool vsync, bool overlayPass = false);
   ~Presenter();
   Presenter(const Presenter&) = delete;
   Presenter& operator=(const Presenter&) = delete;
 
   // Blits the renderer's last frame to the window and queues it for display. Returns false
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
-  bool present(const Renderer& renderer, std::span<const HudRect> hud = {});
+  bool present(const Renderer& renderer, std::span<const HudRect> hud = {},
+               const OverlayDraw& overlay = {});
+
+  // The next present that shows something also copies the window's image (the picture, the
+  // HUD and the overlay) for takeCapture(). Throws RenderError when the surface's images
+  // cannot be copied from.
+  void captureNextPresent();
+  // The copied image (RGBA, sRGB-encoded like the picture), once; empty until one is taken.
+  std::optional<Rgba8Image> takeCapture();
+
+  // A single-subpass render pass over one swapchain image that keeps what the blits drew and
+  // leaves the image ready to present (null without `overlayPass`).
+  VkRenderPass overlayRenderPass() const { return overlayPass_; }
+  uint32_t imageCount() const { return uint32_t(images_.size()); }
+  uint32_t minImageCount() const { return minImageCount_; }
+  // The largest rectangle of the picture's aspect ratio centred in the window.
+  PictureRect pictureRect(uint32_t pictureWidth, uint32_t pictureHeight) const;
 
   // FIFO when on; MAILBOX, else IMMEDIATE, when off and the surface has one. Recreates the
   // swapchain on the next present.
@@ -59,9 +90,12 @@ class Presenter {
   void destroySwapchainResources();
   // Waits for the last blit, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
-  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, VkImage target,
-                  std::span<const HudRect> hud);
+  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+                  std::span<const HudRect> hud, const OverlayDraw& overlay);
+  void recordCapture(VkCommandBuffer commands, VkImage target);
+  void collectCapture();  // once the capturing blit has finished: its pixels into capture_
   void createPalette();
+  void createOverlayPass();
 
   const Context& context_;
   GLFWwindow* window_;
@@ -73,6 +107,16 @@ class Presenter {
   VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;
   VkExtent2D extent_{};
   std::vector<VkImage> images_;
+  uint32_t minImageCount_ = 2;
+  bool wantsOverlayPass_ = false;
+  VkRenderPass overlayPass_ = VK_NULL_HANDLE;
+  std::vector<VkImageView> views_;           // with the overlay pass: one per image
+  std::vector<VkFramebuffer> framebuffers_;  // with the overlay pass: one per image
+  bool canCapture_ = false;                  // the images allow TRANSFER_SRC
+  bool captureRequested_ = false;
+  Buffer captureBuffer_;  // holds the copy until the blit's fence
+  bool captureInFlight_ = false;
+  std::optional<Rgba8Image> capture_;
   // One per swapchain image: a present may still wait on its semaphore while the next frame
   // is recorded, and an image is only acquired again after its presentation is done.
   std::vector<VkSemaphore> blitDone_;

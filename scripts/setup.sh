@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core
   xvfb xauth
   clang libclang-rt-14-dev python3 python3-jsonschema
 )

@@ -42,6 +42,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
             : std::vector<game::SurfaceSample>{});
   }
   for (const render::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  if (options_.verticalFovDegrees) world_.setVerticalFovDegrees(*options_.verticalFovDegrees);
   transformsChanged_ = !world_.changedEntities().empty();
   // Probe frame 0 shows the world before the first tick.
   syncRenderer();

@@ -31,8 +31,9 @@ namespace sim {
 struct SimulationOptions {
   uint32_t width = 64;
   uint32_t height = 36;
-  uint32_t probeEveryTicks = 4;  // k
-  uint32_t probeLatency = 2;     // L, in probe frames
+  uint32_t probeEveryTicks = 4;             // k
+  uint32_t probeLatency = 2;                // L, in probe frames
+  std::optional<float> verticalFovDegrees;  // the level camera's when unset
 };
 
 class Simulation {

@@ -57,7 +57,7 @@ TEST(Settings, defaults_are_the_documented_ones) {
   const game::Settings settings;
   EXPECT_FLOAT_EQ(settings.mouseSensitivity, 0.1f);
   EXPECT_FALSE(settings.invertY);
-  EXPECT_FLOAT_EQ(settings.fieldOfViewDegrees, 70.0f);
+  EXPECT_FALSE(settings.fieldOfViewDegrees.has_value());  // each level's own
   EXPECT_FLOAT_EQ(settings.renderScale, 0.25f);
   EXPECT_TRUE(settings.vsync);
   const std::map<std::string, std::string> expected = {
@@ -93,6 +93,22 @@ TEST_F(SettingsFile, round_trips_every_field) {
   // Floats are written in their shortest form, so the file stays readable by hand.
   EXPECT_NE(readFile(file).find("\"render_scale\": 0.6,"), std::string::npos) << readFile(file);
   EXPECT_NE(readFile(file).find("\"settings\": 1,"), std::string::npos) << readFile(file);
+}
+
+TEST_F(SettingsFile, unset_field_of_view_is_written_as_null_and_keeps_each_levels_own) {
+  const fs::path file = root_ / "settings.json";
+  game::saveSettings(game::Settings{}, file);
+  EXPECT_NE(readFile(file).find("\"field_of_view_degrees\": null,"), std::string::npos)
+      << readFile(file);
+  EXPECT_FALSE(game::loadSettings(file).settings.fieldOfViewDegrees.has_value());
+
+  test::writeFile(file, "{\n  \"settings\": 1,\n  \"field_of_view_degrees\": 200\n}\n");
+  const game::SettingsLoad load = game::loadSettings(file);
+  EXPECT_FALSE(load.settings.fieldOfViewDegrees.has_value());
+  ASSERT_EQ(load.messages.size(), 1u);
+  EXPECT_EQ(load.messages[0], file.string() +
+                                  ":3:28: field_of_view_degrees: expected a number in [30, 120], "
+                                  "got 200; using the default null (the level's)");
 }
 
 TEST_F(SettingsFile, missing_file_gives_the_defaults_silently) {
@@ -163,7 +179,7 @@ TEST_F(SettingsFile, every_kind_of_bad_field_is_reported_where_it_is) {
       at + "7:3: colour: unknown key; ignored",
       at + "5:24: mouse_sensitivity: expected a number in (0, 10], got 0; using the default 0.1",
       at + "4:28: field_of_view_degrees: expected a number in [30, 120], got 29; using the "
-           "default 70",
+           "default null (the level's)",
       at + "3:19: render_scale: expected a number in (0.1, 1], got 0.1; using the default 0.25",
       at + "6:12: vsync: expected true or false, got \"yes\"; using the default true",
       at + "8:21: key_bindings.fly: unknown action; ignored",

@@ -42,6 +42,35 @@ grep -q "^recorded 30 ticks of " "$log" || fail "no recording was written"
 cat "$log"
 grep -q "PASS neither won nor lost in 30 ticks" "$log" || fail "the recording replayed differently"
 
+# The window's image at tick 40 matches the headless render of the same tick: the run is
+# recorded, the capture becomes the recording's image checkpoint, and `sightline replay`
+# renders tick 40 headless and compares (pixels off by more than 2/255: at most 0.5 %). The
+# window is the picture's size with the HUD off, so the blit copies pixels one to one.
+capture_dir=$(mktemp -d)
+trap 'rm -rf "$log" "$recording" "$home" "$capture_dir"' EXIT
+env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
+  "$sightline" play "$level" --validate --size 320x180 --window 320x180 --hud-off \
+  --quit-after-ticks 40 --capture "$capture_dir/window_40.png" \
+  --record "$capture_dir/run.json" >"$log" 2>&1 || { cat "$log"; fail "the capture run failed"; }
+cat "$log"
+grep -q "^window: 320x180, swapchain " "$log" || fail "the window is not 320x180"
+grep -q "^captured the window (320x180) at tick 40 to " "$log" || fail "no capture at tick 40"
+grep -qi "validation" "$log" && fail "validation messages in the capture run (see above)"
+python3 - "$capture_dir/run.json" <<'PY' || fail "could not add the image checkpoint"
+import json, sys
+path = sys.argv[1]
+replay = json.load(open(path))
+# Checkpoints are checked on ticks 0..ticks-1: one tick more reaches tick 40 itself.
+replay["ticks"] = 41
+replay["expect"]["images"] = [{"tick": 40, "png": "window_40.png", "max_different_share": 0.005}]
+json.dump(replay, open(path, "w"), indent=1)
+PY
+"$sightline" replay "$capture_dir/run.json" --validate >"$log" 2>&1 || {
+  cat "$log"
+  fail "the window's image at tick 40 differs from the headless render of tick 40"
+}
+cat "$log"
+
 # Saved progress picks the first level not yet won; saved settings turn vsync off.
 mkdir -p "$XDG_DATA_HOME/sightline" "$XDG_CONFIG_HOME/sightline"
 echo '{"progress": 1, "completed": ["01_first_light.json"]}' >"$XDG_DATA_HOME/sightline/progress.json"

@@ -75,6 +75,23 @@ TEST(Replay, round_trips_through_json) {
   for (uint64_t tick = 0; tick < replay.ticks; ++tick)
     EXPECT_EQ(again.inputAt(tick), replay.inputAt(tick)) << "tick " << tick;
   EXPECT_EQ(again.outcome.outcome, game::ReplayOutcome::Won);
+  EXPECT_FALSE(again.verticalFovDegrees.has_value());  // the level's own unless recorded
+}
+
+TEST(Replay, a_recorded_field_of_view_round_trips_and_is_range_checked) {
+  game::Replay replay = game::parseReplay(kReplay, "replays/test.json");
+  replay.verticalFovDegrees = 87.5f;
+  const game::Replay again = game::parseReplay(game::replayToJson(replay), "replays/test.json");
+  ASSERT_TRUE(again.verticalFovDegrees.has_value());
+  EXPECT_EQ(*again.verticalFovDegrees, 87.5f);
+  try {
+    game::parseReplay(
+        R"({"replay": 1, "level": "a.json", "ticks": 5, "vertical_fov_degrees": 180})", "bad.json");
+    FAIL() << "a field of view of 180 degrees was accepted";
+  } catch (const game::ReplayError& error) {
+    EXPECT_STREQ(error.what(),
+                 "bad.json:1:70: vertical_fov_degrees: expected a number in [1, 179], got 180");
+  }
 }
 
 TEST(Replay, recorded_input_comes_back_exactly_tick_for_tick) {
