@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -43,6 +44,23 @@ std::string systemError(int error) {
   return std::strerror(error);
 }
 
+// Flushes a directory's entries (a rename, a new file or subdirectory) to the disk; `file` is
+// the file being written, for the message.
+void syncDirectory(const fs::path& directory, const fs::path& file) {
+  const fs::path target = directory.empty() ? fs::path(".") : directory;
+  const int descriptor = ::open(target.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (descriptor < 0)
+    throw UserFileError(file.string() + ": cannot open its directory " + target.string() +
+                        " to flush it: " + systemError(errno));
+  const int result = ::fsync(descriptor);
+  const int error = errno;
+  ::close(descriptor);
+  // EINVAL: a file system that cannot flush directories (it has nothing more to do).
+  if (result != 0 && error != EINVAL)
+    throw UserFileError(file.string() + ": cannot flush its directory " + target.string() + ": " +
+                        systemError(error));
+}
+
 }  // namespace
 
 fs::path configDirectory() {
@@ -62,8 +80,16 @@ fs::path progressFile() {
 }
 
 void writeFileAtomically(const fs::path& file, const std::string& contents) {
-  const fs::path directory = file.parent_path();
-  if (!directory.empty()) {
+  const fs::path directory = file.parent_path().empty() ? fs::path(".") : file.parent_path();
+  // The directories this call creates, deepest first: each one's entry in its parent must reach
+  // the disk too, or a power cut could lose the new file together with its directory.
+  std::vector<fs::path> created;
+  for (fs::path missing = directory; !missing.empty(); missing = missing.parent_path()) {
+    std::error_code error;
+    if (fs::exists(missing, error) || error || missing == missing.parent_path()) break;
+    created.push_back(missing);
+  }
+  if (!created.empty()) {
     std::error_code error;
     fs::create_directories(directory, error);
     if (error)
@@ -72,8 +98,10 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
   }
   fs::path temporary = file;
   temporary += ".tmp";
-  // POSIX calls rather than a stream: only they can fsync, and without fsync a power cut after
-  // the rename can leave an empty file on some file systems.
+  // POSIX calls rather than a stream: only they can fsync. The order is what makes a crash or
+  // power cut at any moment leave the old file or the new one: the new contents reach the disk
+  // (fsync of the temporary) before the rename makes them the file, and the rename itself
+  // reaches the disk (fsync of the directory) before this returns.
   const int descriptor = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (descriptor < 0)
     throw UserFileError(temporary.string() + ": cannot create: " + systemError(errno));
@@ -96,13 +124,13 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
     ::unlink(temporary.c_str());
     throw UserFileError(temporary.string() + ": cannot close: " + systemError(error));
   }
-  std::error_code error;
-  fs::rename(temporary, file, error);
-  if (error) {
-    const std::string reason = error.message();
-    fs::remove(temporary, error);
-    throw UserFileError(file.string() + ": cannot replace: " + reason);
+  if (::rename(temporary.c_str(), file.c_str()) != 0) {
+    const int error = errno;
+    ::unlink(temporary.c_str());
+    throw UserFileError(file.string() + ": cannot replace: " + systemError(error));
   }
+  syncDirectory(directory, file);
+  for (const fs::path& made : created) syncDirectory(made.parent_path(), file);
 }
 
 std::optional<std::string> readUserFile(const fs::path& file, std::size_t maxBytes) {

@@ -31,9 +31,10 @@ std::filesystem::path dataDirectory();
 std::filesystem::path settingsFile();
 std::filesystem::path progressFile();
 
-// Replaces `file` with `contents` so that a crash leaves either the old or the new file, never a
-// half-written one: writes "<file>.tmp" in the same directory, flushes it to disk, then renames
-// it over `file`. Creates the missing directories. Throws UserFileError.
+// Replaces `file` with `contents` so that a crash or a power cut leaves either the old or the new
+// file, never a half-written one: writes "<file>.tmp" in the same directory, flushes it to disk,
+// renames it over `file`, then flushes the directory (and the parents of any directories it had
+// to create), so the new file is on disk when this returns. Throws UserFileError.
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents);
 
 // The whole file, std::nullopt when it does not exist; throws UserFileError when it exists but
