@@ -1,7 +1,5 @@
 #include "render/denoiser.hpp"
 
-#include <glm/gtc/packing.hpp>
-
 #include "render/barriers.hpp"
 #include "render/buffer.hpp"
 #include "render/context.hpp"
@@ -54,7 +52,9 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
-  softLight_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "soft light");
+  // Full floats: unshadowed light of a bright lamp passes half float's 65504 (then Inf, and
+  // Inf times a visibility of 0 is NaN).
+  softLight_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "soft light");
   visibilityRaw_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "raw visibility");
   motion_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "motion");
   filterA_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter ping");
@@ -128,44 +128,16 @@ const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
       return iterations % 2 == 0 ? *filterA_ : *filterB_;
     case DenoiserImage::Moments:
       return *moments_[parity & 1u];
+    case DenoiserImage::SoftLight:
+      return *softLight_;
   }
   return *filterA_;
 }
 
 std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
                                       uint32_t iterations) const {
-  const StorageImage& image = imageFor(which, parity, iterations);
-  const bool halfFloats = which != DenoiserImage::Moments;
-  const VkDeviceSize texelBytes = halfFloats ? 8 : 16;
-  Buffer staging(context_, texelBytes * width_ * height_, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                 MemoryUse::Readback, "denoiser readback");
-  context_.submitAndWait([&](VkCommandBuffer commands) {
-    layoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_GENERAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_ACCESS_SHADER_WRITE_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT);
-    VkBufferImageCopy region{};
-    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {width_, height_, 1};
-    vkCmdCopyImageToBuffer(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                           staging.handle(), 1, &region);
-    layoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_READ_BIT,
-                  VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-    toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
-    toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
-    vkCmdPipelineBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1,
-                         &toHost, 0, nullptr, 0, nullptr);
-  });
-  std::vector<glm::vec4> texels(size_t(width_) * height_);
-  if (halfFloats) {
-    std::vector<uint64_t> packed(texels.size());
-    staging.read(packed.data(), packed.size() * sizeof(uint64_t));
-    for (size_t i = 0; i < texels.size(); ++i) texels[i] = glm::unpackHalf4x16(packed[i]);
-  } else {
-    staging.read(texels.data(), texels.size() * sizeof(glm::vec4));
-  }
-  return texels;
+  const bool halfFloats = which == DenoiserImage::RawVisibility || which == DenoiserImage::Denoised;
+  return readTexels(context_, imageFor(which, parity, iterations), halfFloats);
 }
 
 void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,

@@ -20,6 +20,7 @@ enum class DenoiserImage {
   RawVisibility,  // this frame's one-sample visibility (rgb)
   Denoised,       // after the last filter iteration (rgb), variance (a)
   Moments,        // this frame's luminance moments (x, y) and history length (z)
+  SoftLight,      // this frame's unshadowed light of the soft lights (rgb), before visibility
 };
 
 class Denoiser {

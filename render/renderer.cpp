@@ -11,6 +11,7 @@
 #include "render/context.hpp"
 #include "render/gpu_types.hpp"
 #include "render/ray_tracing_pipeline.hpp"
+#include "render/render_space.hpp"
 #include "render/shader_compiler.hpp"
 #include "render/storage_image.hpp"
 #include "render/texture.hpp"
@@ -106,7 +107,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
          glm::uvec4(static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
                     textureSlot(material.normalTexture), 0u)});
   }
-  for (const LightDesc& light : scene.lights) gpuLights_.push_back(toGpuLight(light));
+  for (const LightDesc& light : scene.lights) {
+    gpuLights_.push_back(toGpuLight(light));
+    lightPositions_.push_back(light.position);
+  }
   lightCount_ = static_cast<uint32_t>(gpuLights_.size());
 
   vertices_ = makeStorage(context, allVertices, kGeometryUsage, "vertices");
@@ -182,7 +186,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
 
   hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
-                                             VK_FORMAT_R32G32B32A32_SFLOAT, 0, "hdr radiance");
+                                             VK_FORMAT_R32G32B32A32_SFLOAT,
+                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hdr radiance");
   outputImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                                 VK_FORMAT_R8G8B8A8_UNORM,
                                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
@@ -381,7 +386,8 @@ void Renderer::writeInstanceMotion() {
   for (size_t i = 0; i < currentTransforms_.size(); ++i) {
     glm::mat4 previousFromCurrent(1.0f);
     if (!pendingTransforms_.empty()) {
-      previousFromCurrent = currentTransforms_[i] * glm::inverse(pendingTransforms_[i]);
+      previousFromCurrent =
+          motionInRenderSpace(currentTransforms_[i], pendingTransforms_[i], *renderOrigin_);
       currentTransforms_[i] = pendingTransforms_[i];
     }
     glm::vec4 rows[3];
@@ -389,6 +395,8 @@ void Renderer::writeInstanceMotion() {
     instances_.write(rows, sizeof rows, i * sizeof(gpu::GpuInstance) + sizeof(glm::uvec4));
   }
   instancesMoved_ = !pendingTransforms_.empty();
+  if (instancesMoved_) tlasStale_ = true;
+  pendingTransforms_.clear();
 }
 
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
@@ -434,25 +442,52 @@ void Renderer::setProbes(const ProbeRequest& request) {
         glm::uvec4(focus.instance, box.x0 | (box.y0 << 16), box.x1 | (box.y1 << 16), 0);
     counts.focusRegionPixels.push_back(box.pixels());
   }
-  std::vector<gpu::ProbePoint> points(size_t(MAX_EXPOSURE_PROBES) * EXPOSURE_SAMPLES);
   for (size_t i = 0; i < request.exposure.size(); ++i) {
     const ExposureProbeDesc& exposure = request.exposure[i];
     if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
       throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
     setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(), 0, 0);
-    for (size_t p = 0; p < exposure.points.size(); ++p) {
-      const ExposurePoint& point = exposure.points[p];
-      points[i * EXPOSURE_SAMPLES + p] = {glm::vec4(point.position, 1.0f),
-                                          glm::vec4(point.normal, point.oneSided ? 1.0f : 0.0f)};
-    }
     counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
   }
   counts.focusPixels.assign(request.focus.size(), 0);
   counts.exposureFixed.assign(request.exposure.size(), 0);
   probeSetup_.write(&setup, sizeof setup);
-  probeSetup_.write(points.data(), points.size() * sizeof(gpu::ProbePoint), sizeof setup);
   probeRequest_ = request;
   probeCounts_ = std::move(counts);
+  writeProbePoints();
+}
+
+// The exposure probes' points in render space (after a new request or a new origin).
+void Renderer::writeProbePoints() {
+  if (probeRequest_.exposure.empty()) return;
+  const glm::dvec3 origin = renderOrigin_.value_or(glm::dvec3(0.0));
+  std::vector<gpu::ProbePoint> points(size_t(MAX_EXPOSURE_PROBES) * EXPOSURE_SAMPLES);
+  for (size_t i = 0; i < probeRequest_.exposure.size(); ++i) {
+    const ExposureProbeDesc& exposure = probeRequest_.exposure[i];
+    for (size_t p = 0; p < exposure.points.size(); ++p) {
+      const ExposurePoint& point = exposure.points[p];
+      points[i * EXPOSURE_SAMPLES + p] = {glm::vec4(toRenderSpace(point.position, origin), 1.0f),
+                                          glm::vec4(point.normal, point.oneSided ? 1.0f : 0.0f)};
+    }
+  }
+  probeSetup_.write(points.data(), points.size() * sizeof(gpu::ProbePoint),
+                    sizeof(gpu::ProbeSetup));
+}
+
+// Centres render space on `origin` (the frame's camera): lights, probe points and, with the
+// next TLAS update, instances move to it. Nothing changes while the camera stands still.
+void Renderer::moveRenderOrigin(const glm::dvec3& origin) {
+  previousOrigin_ = renderOrigin_.value_or(origin);
+  if (renderOrigin_ == origin) return;
+  renderOrigin_ = origin;
+  tlasStale_ = true;
+  for (size_t i = 0; i < gpuLights_.size(); ++i) {
+    gpuLights_[i].positionType =
+        glm::vec4(toRenderSpace(lightPositions_[i], origin), gpuLights_[i].positionType.w);
+  }
+  if (!gpuLights_.empty())
+    lights_.write(gpuLights_.data(), gpuLights_.size() * sizeof(gpuLights_[0]));
+  writeProbePoints();
 }
 
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
@@ -477,7 +512,7 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
   const float aspect = float(options_.width) / float(options_.height);
 
   gpu::FrameUniforms uniforms{};
-  uniforms.cameraPosition = glm::vec4(camera.position, 1.0f);
+  uniforms.cameraPosition = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);  // render space is camera-centred
   uniforms.cameraRight = glm::vec4(right * tanHalf * aspect, 0.0f);
   uniforms.cameraUp = glm::vec4(up * tanHalf, 0.0f);
   uniforms.cameraForward = glm::vec4(forward, 0.0f);
@@ -491,14 +526,16 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
   // Reprojection needs the previous frame's camera; without one the history starts afresh.
   // A jump of the camera (a cut or teleport) is treated like an explicit reset: reprojecting
   // across it would only smear the old view.
-  constexpr float kCutDistance = 1.0f, kCutCosine = 0.7f;
+  constexpr double kCutDistance = 1.0;
+  constexpr float kCutCosine = 0.7f;
+  const glm::dvec3 origin = renderOrigin_.value_or(glm::dvec3(0.0));
   const bool cut = previousUniforms_ &&
-                   (glm::distance(glm::vec3(previousUniforms_->cameraPosition), camera.position) >
-                        kCutDistance ||
+                   (glm::distance(previousOrigin_, origin) > kCutDistance ||
                     glm::dot(glm::vec3(previousUniforms_->cameraForward), forward) < kCutCosine);
   const bool reset = frame.resetHistory || !previousUniforms_ || cut;
   const gpu::FrameUniforms& previous = previousUniforms_ ? *previousUniforms_ : uniforms;
-  uniforms.previousCameraPosition = previous.cameraPosition;
+  // The previous camera in this frame's render space.
+  uniforms.previousCameraPosition = glm::vec4(glm::vec3(previousOrigin_ - origin), 1.0f);
   uniforms.previousCameraRight = previous.cameraRight;
   uniforms.previousCameraUp = previous.cameraUp;
   uniforms.previousCameraForward = previous.cameraForward;
@@ -521,12 +558,16 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
   memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-  if (!pendingTransforms_.empty()) {
+  if (tlasStale_) {
     // The previous trace read the TLAS; the update rewrites it.
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, 0,
                   VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0);
-    topLevel_->recordUpdate(commands, pendingTransforms_);
-    pendingTransforms_.clear();
+    std::vector<glm::mat4> renderTransforms;
+    renderTransforms.reserve(currentTransforms_.size());
+    for (const glm::mat4& transform : currentTransforms_)
+      renderTransforms.push_back(toRenderSpace(transform, *renderOrigin_));
+    topLevel_->recordUpdate(commands, renderTransforms);
+    tlasStale_ = false;
     memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                   VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
@@ -608,6 +649,10 @@ std::vector<glm::vec4> Renderer::readDenoiser(DenoiserImage which) const {
   return denoiser_->read(which, parity_ ^ 1u, lastIterations_);
 }
 
+std::vector<glm::vec4> Renderer::readRadiance() const {
+  return readTexels(context_, *hdrImage_, false);
+}
+
 void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments) {
   if (!denoiser_) throw RenderError("fillDenoiserHistory: this scene has no soft shadows");
   denoiser_->fillHistory(parity_, history, moments);
@@ -615,6 +660,7 @@ void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& mo
 
 FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
   lastIterations_ = denoiserIterations(frame);
+  moveRenderOrigin(glm::dvec3(frame.camera.position));
   writeInstanceMotion();
   writeFrameUniforms(frame);
 

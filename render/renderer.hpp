@@ -85,6 +85,9 @@ class Renderer {
   // transfer source). After renderFrame it is in VK_IMAGE_LAYOUT_GENERAL; a user that changes
   // the layout (a presenter's blit) must put it back to GENERAL before the next frame.
   VkImage outputImage() const;
+  // The last frame's linear radiance before exposure and tonemap, without the soft lights'
+  // share (test and debugging hook; waits).
+  std::vector<glm::vec4> readRadiance() const;
   // Soft-shadow denoiser images of the last frame (test and debugging hook; waits).
   std::vector<glm::vec4> readDenoiser(DenoiserImage which) const;
   // Replaces the history the next frame reprojects (test hook: long histories, NaN).
@@ -102,8 +105,10 @@ class Renderer {
   void createDescriptors();
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);
+  void moveRenderOrigin(const glm::dvec3& origin);
   void writeFrameUniforms(const FrameDesc& frame);
   void writeInstanceMotion();
+  void writeProbePoints();
   uint32_t denoiserIterations(const FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback);
 
@@ -129,8 +134,10 @@ class Renderer {
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;
   std::unique_ptr<TopLevel> topLevel_;
-  std::vector<glm::mat4> pendingTransforms_;
-  std::vector<gpu::GpuLight> gpuLights_;
+  std::vector<glm::mat4> pendingTransforms_;  // world space, for the next frame
+  bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_
+  std::vector<gpu::GpuLight> gpuLights_;   // render space (positions relative to the origin)
+  std::vector<glm::vec3> lightPositions_;  // world space
   std::vector<std::unique_ptr<Texture>> textures_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   std::unique_ptr<StorageImage> hdrImage_;
@@ -143,7 +150,11 @@ class Renderer {
   uint32_t lastIterations_ = 0;
   std::unique_ptr<Denoiser> denoiser_;
   std::optional<gpu::FrameUniforms> previousUniforms_;  // for reprojection; none: reset
-  std::vector<glm::mat4> currentTransforms_;
+  // The world position render space is centred on: the camera of the last frame (none before
+  // the first), and that of the frame before it (for reprojection and cut detection).
+  std::optional<glm::dvec3> renderOrigin_;
+  glm::dvec3 previousOrigin_{0.0};
+  std::vector<glm::mat4> currentTransforms_;  // world space
   bool instancesMoved_ = false;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;

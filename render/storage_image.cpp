@@ -1,5 +1,7 @@
 #include "render/storage_image.hpp"
 
+#include <glm/gtc/packing.hpp>
+
 #include "render/barriers.hpp"
 #include "render/buffer.hpp"
 #include "render/context.hpp"
@@ -90,6 +92,40 @@ void uploadImage2D(const Context& context, VkImage image, uint32_t width, uint32
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, nextStages,
                        nextAccess);
   });
+}
+
+std::vector<glm::vec4> readTexels(const Context& context, const StorageImage& image,
+                                  bool halfFloats) {
+  const VkDeviceSize texelBytes = halfFloats ? 8 : 16;
+  const size_t texelCount = size_t(image.width()) * image.height();
+  Buffer staging(context, texelBytes * texelCount, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                 MemoryUse::Readback, "texel readback");
+  context.submitAndWait([&](VkCommandBuffer commands) {
+    imageLayoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_GENERAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT);
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {image.width(), image.height(), 1};
+    vkCmdCopyImageToBuffer(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           staging.handle(), 1, &region);
+    imageLayoutBarrier(commands, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_TRANSFER_READ_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  });
+  std::vector<glm::vec4> texels(texelCount);
+  if (halfFloats) {
+    std::vector<uint64_t> packed(texelCount);
+    staging.read(packed.data(), packed.size() * sizeof(uint64_t));
+    for (size_t i = 0; i < texelCount; ++i) texels[i] = glm::unpackHalf4x16(packed[i]);
+  } else {
+    staging.read(texels.data(), texels.size() * sizeof(glm::vec4));
+  }
+  return texels;
 }
 
 }  // namespace render

@@ -1,8 +1,10 @@
 #pragma once
 // A 2D image the shaders read and write, kept in VK_IMAGE_LAYOUT_GENERAL.
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
 
 namespace render {
 
@@ -39,6 +41,10 @@ VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, V
 void uploadImage2D(const Context& context, VkImage image, uint32_t width, uint32_t height,
                    const void* bytes, VkImageLayout finalLayout, VkPipelineStageFlags nextStages,
                    VkAccessFlags nextAccess);
+// The texels of a float image kept in GENERAL (created with TRANSFER_SRC usage): rgba16f when
+// `halfFloats`, else rgba32f. A test and debugging hook: submits and waits.
+std::vector<glm::vec4> readTexels(const Context& context, const StorageImage& image,
+                                  bool halfFloats);
 VkImageView createImageView(const Context& context, VkImage image, VkFormat format,
                             const std::string& name);
 

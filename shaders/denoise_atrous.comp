@@ -32,7 +32,8 @@ void main() {
     const float kernel[3] = float[3](0.25, 0.5, 0.25);
     float centreLuminance = luminance(centre.rgb);
     float luminanceScale = 4.0 * sqrt(max(centre.a, 0.0)) + 1e-4;
-    float depthScale = 0.02 * surface.w * float(iteration.stepSize) + 1e-3;
+    // Relative to the distance, so the filter behaves the same at every scale of the level.
+    float depthScale = max(0.02 * surface.w * float(iteration.stepSize), 1e-30);
     float weightSum = kernel[1] * kernel[1];
     vec3 differenceSum = vec3(0.0);
     float varianceSum = weightSum * weightSum * centre.a;

@@ -67,8 +67,7 @@ void main() {
         if (weight <= 0.0) continue;
         if (imageLoad(instancePreviousImage, tap).x != instance) continue;
         vec4 previousSurface = imageLoad(surfacePreviousImage, tap);
-        if (abs(previousSurface.w - expectedDistance) >
-            RELATIVE_DEPTH_TOLERANCE * expectedDistance + 1e-3)
+        if (abs(previousSurface.w - expectedDistance) > RELATIVE_DEPTH_TOLERANCE * expectedDistance)
           continue;
         if (dot(previousSurface.xyz, surface.xyz) < NORMAL_COSINE_TOLERANCE) continue;
         vec3 tapHistory = imageLoad(historyImage, tap).rgb;

@@ -4,7 +4,7 @@ layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
 #ifdef DENOISER_BINDINGS
 // Soft-shadow inputs written by ray-gen and the denoiser's own images.
-layout(set = 0, binding = BINDING_SOFT_LIGHT, rgba16f) uniform image2D softLightImage;
+layout(set = 0, binding = BINDING_SOFT_LIGHT, rgba32f) uniform image2D softLightImage;
 layout(set = 0, binding = BINDING_VISIBILITY_RAW, rgba16f) uniform image2D visibilityRawImage;
 layout(set = 0, binding = BINDING_SURFACE, rgba32f) uniform image2D surfaceImage;
 layout(set = 0, binding = BINDING_SURFACE_PREVIOUS, rgba32f) uniform image2D surfacePreviousImage;

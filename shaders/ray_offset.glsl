@@ -1,17 +1,18 @@
-// Secondary ray origins leave the surface by a few ULPs along the geometric normal, scaled to
-// the coordinate's magnitude (integer steps in float bits), so there is no fixed epsilon that
-// fails far from the origin or at small scales. Near zero, where ULPs vanish, a tiny fixed
-// step takes over.
-vec3 offsetRayOrigin(vec3 position, vec3 geometricNormal) {
-  const float nearOrigin = 1.0 / 32.0;
-  const float fixedStep = 1.0 / 65536.0;
-  const float ulpsPerUnitNormal = 256.0;
-  ivec3 ulps = ivec3(ulpsPerUnitNormal * geometricNormal);
-  ivec3 signedUlps = ivec3(position.x < 0.0 ? -ulps.x : ulps.x, position.y < 0.0 ? -ulps.y : ulps.y,
-                           position.z < 0.0 ? -ulps.z : ulps.z);
-  vec3 stepped = intBitsToFloat(floatBitsToInt(position) + signedUlps);
-  vec3 nearZero = position + fixedStep * geometricNormal;
-  return vec3(abs(position.x) < nearOrigin ? nearZero.x : stepped.x,
-              abs(position.y) < nearOrigin ? nearZero.y : stepped.y,
-              abs(position.z) < nearOrigin ? nearZero.z : stepped.z);
+// Secondary ray origins leave the surface by a step proportional to `magnitude`, the largest
+// quantity the hit position was computed from (the ray's origin coordinates and the distance
+// it travelled): the hit's rounding error grows with it, so the step holds at every scale and
+// distance, with no fixed epsilon that is metres long far from the camera or larger than the
+// level itself at small scales. 2^-16 of it is 128 float ULPs.
+float rayOffsetMagnitude(vec3 origin, float distance) {
+  vec3 size = abs(origin);
+  return max(max(size.x, size.y), max(size.z, distance));
+}
+
+// The step goes along the geometric normal (facing the arriving ray) and back along the
+// arriving ray, whose last stretch is known to be empty: at a concave edge, where another
+// surface lies within rounding distance of the hit, it moves away from that surface too.
+vec3 offsetRayOrigin(vec3 position, vec3 geometricNormal, vec3 arriving, float magnitude) {
+  const float relativeStep = 1.0 / 65536.0;
+  // Below the smallest normal float the step would vanish; there everything is at the origin.
+  return position + (geometricNormal - arriving) * max(magnitude * relativeStep, 1.0e-30);
 }

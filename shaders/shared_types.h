@@ -26,7 +26,7 @@ using uint = uint32_t;
 #define BINDING_TEXTURES 10
 #define BINDING_PATHS 11
 // Soft shadows: what ray-gen writes for the denoiser, and the denoiser's own images.
-#define BINDING_SOFT_LIGHT 12      // rgba16f: unshadowed light of the sampled (soft) lights
+#define BINDING_SOFT_LIGHT 12      // rgba32f: unshadowed light of the sampled (soft) lights
 #define BINDING_VISIBILITY_RAW 13  // rgba16f: this frame's visibility estimate
 #define BINDING_SURFACE 14         // rgba32f: world normal, distance from the camera (< 0: sky)
 #define BINDING_SURFACE_PREVIOUS 15
@@ -72,7 +72,7 @@ using uint = uint32_t;
 #define VERTEX_FLOATS 8
 
 struct FrameUniforms {
-  vec4 cameraPosition;          // xyz
+  vec4 cameraPosition;          // xyz: the camera in render space (world minus camera): 0
   vec4 cameraRight;             // xyz: right * tan(fov/2) * aspect
   vec4 cameraUp;                // xyz: up * tan(fov/2)
   vec4 cameraForward;           // xyz: unit forward
@@ -81,7 +81,7 @@ struct FrameUniforms {
   vec4 ambient;                 // linear radiance of a uniform, unshadowed environment
   uvec4 sizeFrameLights;        // width, height, frame index, light count
   vec4 exposureTonemap;         // x: exposure, y: tonemap mode (as float), z: row groups
-  vec4 previousCameraPosition;  // the previous frame's camera, for reprojection
+  vec4 previousCameraPosition;  // the previous frame's camera in this frame's render space
   vec4 previousCameraRight;
   vec4 previousCameraUp;
   vec4 previousCameraForward;
@@ -90,8 +90,8 @@ struct FrameUniforms {
 
 struct GpuInstance {
   uvec4 geometry;  // x: first index, y: vertex offset, z: material, w: unused
-  // Rows of the previous frame's object-to-world times the current world-to-object: where a
-  // point on this instance was one frame ago (identity when it did not move).
+  // Rows of the previous frame's object-to-world times the current world-to-object, in render
+  // space: where a point on this instance was one frame ago (identity when it did not move).
   vec4 previousFromCurrent[3];
 };
 
@@ -136,7 +136,7 @@ struct ProbeSetup {
 };
 
 struct ProbePoint {
-  vec4 position;  // xyz: world position, already offset off the surface
+  vec4 position;  // xyz: render-space position, already offset off the surface
   vec4 normal;    // xyz: outward normal; w: 1 = the light must be on the normal's side
 };
 

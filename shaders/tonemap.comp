@@ -24,6 +24,9 @@ void main() {
   radiance += imageLoad(softLightImage, pixel).rgb * visibility;
 #endif
   radiance *= frame.exposureTonemap.x;
+  // Saturate, never overflow: both curves are flat at 1 long before 1e4 (ACES from 7.3), and
+  // ACES squares its input (infinite past 1.8e19, and infinity over infinity is NaN).
+  radiance = clamp(mix(radiance, vec3(0.0), isnan(radiance)), 0.0, 1.0e4);
   vec3 display = uint(frame.exposureTonemap.y) == TONEMAP_ACES ? acesFilmic(radiance)
                                                                 : clamp(radiance, 0.0, 1.0);
   // Quantize here with round-to-nearest so the UNORM store is exact on every driver.

@@ -1,0 +1,35 @@
+#pragma once
+// Camera-relative render space: world coordinates minus the camera's position, taken in double
+// on the CPU. Floats near the camera keep their full precision wherever the level lies (at
+// 1e5 m a world float is only good to 7.8 mm, and ray offsets scaled to it are metres long).
+// The TLAS, lights and probe points are in render space; the camera sits at its origin.
+#include <glm/glm.hpp>
+
+namespace render {
+
+inline glm::vec3 toRenderSpace(const glm::vec3& worldPoint, const glm::dvec3& origin) {
+  return glm::vec3(glm::dvec3(worldPoint) - origin);
+}
+
+// The same placement with its translation made relative to `origin`.
+inline glm::mat4 toRenderSpace(const glm::mat4& objectToWorld, const glm::dvec3& origin) {
+  glm::mat4 result = objectToWorld;
+  result[3] = glm::vec4(toRenderSpace(glm::vec3(objectToWorld[3]), origin), objectToWorld[3].w);
+  return result;
+}
+
+// Where a point of render space (around `origin`) on an instance was one frame ago, as a
+// transform of render space: previous object-to-world times current world-to-object, moved to
+// `origin`. Identity exactly when the instance did not move.
+inline glm::mat4 motionInRenderSpace(const glm::mat4& previousObjectToWorld,
+                                     const glm::mat4& currentObjectToWorld,
+                                     const glm::dvec3& origin) {
+  if (previousObjectToWorld == currentObjectToWorld) return glm::mat4(1.0f);
+  glm::dmat4 toWorld(1.0), toRender(1.0);
+  toWorld[3] = glm::dvec4(origin, 1.0);
+  toRender[3] = glm::dvec4(-origin, 1.0);
+  return glm::mat4(toRender * glm::dmat4(previousObjectToWorld) *
+                   glm::inverse(glm::dmat4(currentObjectToWorld)) * toWorld);
+}
+
+}  // namespace render
