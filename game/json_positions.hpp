@@ -58,6 +58,10 @@ std::string escapeJsonPointerToken(std::string_view token);
 // Undoes escapeJsonPointerToken.
 std::string unescapeJsonPointerToken(std::string_view token);
 
+// `text` with its control characters written as escapes ("\n", "\t", "\u001b"), so that a
+// message quoting what a file holds (a key, a name, a path) stays on one line.
+std::string escapeControlCharacters(std::string_view text);
+
 // Line and column of the byte at zero-based `offset` (clamped to the end of the text).
 SourcePosition positionOfOffset(std::string_view text, std::size_t offset);
 

@@ -401,9 +401,10 @@ class LevelParser {
   [[noreturn]] void failAt(SourcePosition at, const std::string& pointer,
                            const std::string& message) const {
     const std::string path = positions_.dottedPath(pointer);
-    throw LevelError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                     std::to_string(at.column) + ": " + (path.empty() ? "" : path + ": ") +
-                     message);
+    // One line whatever the file holds: keys, ids and paths are quoted in messages.
+    throw LevelError(escapeControlCharacters(file_.string() + ":" + std::to_string(at.line) + ":" +
+                                             std::to_string(at.column) + ": " +
+                                             (path.empty() ? "" : path + ": ") + message));
   }
 
   [[noreturn]] void failValue(const std::string& pointer, const std::string& message) const {

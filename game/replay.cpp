@@ -51,7 +51,8 @@ class ReplayParser {
     Replay replay;
     replay.file = file_;
     require(root, "", "level");
-    if (!root["level"].is_string()) fail("/level", "expected a path to a level file");
+    if (!root["level"].is_string() || root["level"].get<std::string>().empty())
+      fail("/level", "expected a path to a level file");
     replay.level = (file_.parent_path() / root["level"].get<std::string>()).lexically_normal();
     const SourcePosition levelAt = positions_.valueAt("/level");
     replay.levelPlace =
@@ -104,9 +105,10 @@ class ReplayParser {
   [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
     const SourcePosition at = positions_.valueAt(pointer);
     const std::string path = positions_.dottedPath(pointer);
-    throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                      std::to_string(at.column) + ": " + (path.empty() ? "" : path + ": ") +
-                      message);
+    // One line whatever the file holds: keys and values are quoted in messages.
+    throw ReplayError(escapeControlCharacters(file_.string() + ":" + std::to_string(at.line) + ":" +
+                                              std::to_string(at.column) + ": " +
+                                              (path.empty() ? "" : path + ": ") + message));
   }
 
   void require(const Json& object, const std::string& pointer, const std::string& key) const {
@@ -121,10 +123,10 @@ class ReplayParser {
       for (const std::string& key : allowed) list += (list.empty() ? "\"" : ", \"") + key + "\"";
       const std::string member = pointer + "/" + escapeJsonPointerToken(item.key());
       const SourcePosition at = positions_.keyAt(member);
-      throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                        std::to_string(at.column) + ": " +
-                        (pointer.empty() ? "" : positions_.dottedPath(pointer) + ": ") +
-                        "unknown key \"" + item.key() + "\"; allowed keys: " + list);
+      throw ReplayError(escapeControlCharacters(
+          file_.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+          (pointer.empty() ? "" : positions_.dottedPath(pointer) + ": ") + "unknown key \"" +
+          item.key() + "\"; allowed keys: " + list));
     }
   }
 
@@ -381,7 +383,10 @@ Replay loadReplay(const fs::path& file) {
 std::string replayToJson(const Replay& replay) {
   Json root;
   root["replay"] = 1;
-  root["level"] = replay.level.lexically_relative(replay.file.parent_path()).generic_string();
+  // Relative to the replay where it can be; an absolute level path with a relative replay path
+  // (or another root) has no relative form and stays absolute.
+  const fs::path relativeLevel = replay.level.lexically_relative(replay.file.parent_path());
+  root["level"] = (relativeLevel.empty() ? replay.level : relativeLevel).generic_string();
   root["size"] = {replay.width, replay.height};
   root["seed"] = replay.seed;
   if (replay.verticalFovDegrees) root["vertical_fov_degrees"] = *replay.verticalFovDegrees;
