@@ -89,7 +89,7 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
     if (fs::exists(missing, error) || error || missing == missing.parent_path()) break;
     created.push_back(missing);
   }
-  if (!created.empty()) {
+  {
     std::error_code error;
     fs::create_directories(directory, error);
     if (error)
