@@ -13,5 +13,6 @@ int commandValidate(const Options& options);
 int commandInfo(const Options& options);
 int commandDevices();
 int commandReplay(const Options& options);
+int commandSoak(const Options& options);
 
 }  // namespace app

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
     if (options.command == "info") return app::commandInfo(options);
     if (options.command == "bench-quality") return app::commandBenchQuality(options);
     if (options.command == "replay") return app::commandReplay(options);
+    if (options.command == "soak") return app::commandSoak(options);
     if (options.command == "help" || options.command == "--help" || options.command == "-h") {
       std::fputs(app::kUsage, stdout);
       return 0;

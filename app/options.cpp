@@ -20,6 +20,9 @@ commands:
   devices                      list Vulkan devices and whether they can run Sightline
   replay <replay.json...>      run replays headless and check their expectations (exit 0
                                when all hold); --trace FILE.csv for the per-tick values
+  soak <level.json>            run --frames frames (default 3000) with the movers going and
+                               fail if resident memory grows more than 1 MB after frame 500;
+                               with --validate also if a Vulkan object is left at exit
 
 options:
   --size WxH          image size (render: 320x180; play: render size, scaled to the window)

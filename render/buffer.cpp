@@ -18,43 +18,47 @@ Buffer::Buffer(const Context& context, VkDeviceSize size, VkBufferUsageFlags usa
   vkCheck(vkCreateBuffer(device_, &createInfo, nullptr, &buffer_), "vkCreateBuffer");
   context.setName(buffer_, VK_OBJECT_TYPE_BUFFER, name);
 
-  VkMemoryRequirements requirements;
-  vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
-  VkMemoryPropertyFlags required = 0, preferred = 0;
-  switch (memory) {
-    case MemoryUse::DeviceOnly:
-      preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-      break;
-    case MemoryUse::Upload:
-      required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-      preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
-      break;
-    case MemoryUse::Readback:
-      required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-      preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
-      break;
-  }
-  VkMemoryAllocateFlagsInfo flagsInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
-  const bool wantsAddress = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
-  flagsInfo.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
-  VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
-                                    wantsAddress ? &flagsInfo : nullptr};
-  allocateInfo.allocationSize = requirements.size;
-  allocateInfo.memoryTypeIndex =
-      context.findMemoryType(requirements.memoryTypeBits, required, preferred);
-  VkResult result = vkAllocateMemory(device_, &allocateInfo, nullptr, &memory_);
-  if (result != VK_SUCCESS) {
-    release();
+  // Nothing half-made stays behind when a step fails (a lost device, exhausted memory).
+  try {
+    VkMemoryRequirements requirements;
+    vkGetBufferMemoryRequirements(device_, buffer_, &requirements);
+    VkMemoryPropertyFlags required = 0, preferred = 0;
+    switch (memory) {
+      case MemoryUse::DeviceOnly:
+        preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        break;
+      case MemoryUse::Upload:
+        required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        break;
+      case MemoryUse::Readback:
+        required = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+        preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+        break;
+    }
+    VkMemoryAllocateFlagsInfo flagsInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO};
+    const bool wantsAddress = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) != 0;
+    flagsInfo.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
+    VkMemoryAllocateInfo allocateInfo{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+                                      wantsAddress ? &flagsInfo : nullptr};
+    allocateInfo.allocationSize = requirements.size;
+    allocateInfo.memoryTypeIndex =
+        context.findMemoryType(requirements.memoryTypeBits, required, preferred);
+    VkResult result = injectedFaultBefore("vkAllocateMemory");
+    if (result == VK_SUCCESS) result = vkAllocateMemory(device_, &allocateInfo, nullptr, &memory_);
     vkCheck(result, ("vkAllocateMemory for " + name).c_str());
-  }
-  vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
-  if (memory != MemoryUse::DeviceOnly) {
-    vkCheck(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
-  }
-  if (wantsAddress) {
-    VkBufferDeviceAddressInfo addressInfo{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
-    addressInfo.buffer = buffer_;
-    address_ = vkGetBufferDeviceAddress(device_, &addressInfo);
+    vkCheck(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
+    if (memory != MemoryUse::DeviceOnly) {
+      vkCheck(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_), "vkMapMemory");
+    }
+    if (wantsAddress) {
+      VkBufferDeviceAddressInfo addressInfo{VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO};
+      addressInfo.buffer = buffer_;
+      address_ = vkGetBufferDeviceAddress(device_, &addressInfo);
+    }
+  } catch (...) {
+    release();
+    throw;
   }
 }
 

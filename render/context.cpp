@@ -73,7 +73,10 @@ int deviceTypeRank(VkPhysicalDeviceType type) {
   }
 }
 
+// `messengerInfo`, when validating, also receives the messages of vkCreateInstance and
+// vkDestroyInstance (such as instance objects left alive).
 VkInstance createInstance(bool validate, const std::vector<std::string>& extraExtensions,
+                          const VkDebugUtilsMessengerCreateInfoEXT* messengerInfo,
                           bool* debugUtilsEnabled) {
   uint32_t extensionCount = 0;
   vkEnumerateInstanceExtensionProperties(nullptr, &extensionCount, nullptr);
@@ -119,6 +122,7 @@ VkInstance createInstance(bool validate, const std::vector<std::string>& extraEx
     enabledExtensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     // The layer provides VK_EXT_validation_features, which turns synchronization checks on.
     enabledExtensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+    validationFeatures.pNext = messengerInfo;
     next = &validationFeatures;
     *debugUtilsEnabled = true;
   }
@@ -203,7 +207,7 @@ std::string describeMissingRayTracing(const DeviceInfo& device) {
 
 std::vector<DeviceInfo> Context::listDevices(const std::vector<std::string>& extraExtensions) {
   bool debugUtils = false;
-  VkInstance instance = createInstance(false, {}, &debugUtils);
+  VkInstance instance = createInstance(false, {}, nullptr, &debugUtils);
   std::vector<DeviceInfo> devices;
   try {
     uint32_t index = 0;
@@ -218,21 +222,24 @@ std::vector<DeviceInfo> Context::listDevices(const std::vector<std::string>& ext
 }
 
 Context::Context(const ContextOptions& options) : options_(options) {
+  readFaultInjectionSetting();
   bool debugUtils = false;
-  instance_ = createInstance(options.validate, options.extraInstanceExtensions, &debugUtils);
+  VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
+      VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                                  VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  messengerInfo.pfnUserCallback = &Context::onDebugMessage;
+  messengerInfo.pUserData = this;
+  instance_ = createInstance(options.validate, options.extraInstanceExtensions, &messengerInfo,
+                             &debugUtils);
+  validationEnabled_ = debugUtils;
   try {
     if (debugUtils) {
       auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
           vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-      VkDebugUtilsMessengerCreateInfoEXT messengerInfo{
-          VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-      messengerInfo.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
-                                      VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-      messengerInfo.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
-                                  VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                                  VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-      messengerInfo.pfnUserCallback = &Context::onDebugMessage;
-      messengerInfo.pUserData = this;
       vkCheck(create(instance_, &messengerInfo, nullptr, &messenger_),
               "vkCreateDebugUtilsMessengerEXT");
     }
@@ -396,6 +403,10 @@ Context::~Context() {
   destroy();
 }
 
+void Context::close() {
+  destroy();
+}
+
 void Context::destroy() {
   if (device_) {
     vkDeviceWaitIdle(device_);
@@ -455,12 +466,20 @@ VkCommandBuffer Context::beginOneTimeCommands() const {
 }
 
 void Context::endOneTimeCommands(VkCommandBuffer commands) const {
-  vkCheck(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &commands;
-  vkCheck(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
-  vkCheck(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
+  try {
+    vkCheck(vkEndCommandBuffer(commands), "vkEndCommandBuffer");
+    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+    submit.commandBufferCount = 1;
+    submit.pCommandBuffers = &commands;
+    vkCheck(vkQueueSubmit(queue_, 1, &submit, VK_NULL_HANDLE), "vkQueueSubmit");
+    vkCheck(vkQueueWaitIdle(queue_), "vkQueueWaitIdle");
+  } catch (...) {
+    // The buffers the commands use are destroyed while the error unwinds: whatever was submitted
+    // must be finished (or the device lost, which returns at once) before that.
+    vkDeviceWaitIdle(device_);
+    vkFreeCommandBuffers(device_, commandPool_, 1, &commands);
+    throw;
+  }
   vkFreeCommandBuffers(device_, commandPool_, 1, &commands);
 }
 

@@ -164,4 +164,32 @@ void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,
   });
 }
 
+void Denoiser::writeHistoryTexel(uint32_t nextParity, uint32_t x, uint32_t y,
+                                 const glm::vec4& history, const glm::vec4& moments) const {
+  if (x >= width_ || y >= height_) throw RenderError("writeHistoryTexel: pixel outside the image");
+  const uint32_t previous = (nextParity & 1u) ^ 1u;
+  const glm::vec4 values[2] = {history, moments};
+  Buffer staging(context_, sizeof values, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+                 "history texel");
+  staging.write(values, sizeof values);
+  context_.submitAndWait([&](VkCommandBuffer commands) {
+    const VkImage images[2] = {history_[previous]->image(), moments_[previous]->image()};
+    for (int i = 0; i < 2; ++i) {
+      layoutBarrier(
+          commands, images[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+          VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+      VkBufferImageCopy region{};
+      region.bufferOffset = VkDeviceSize(i) * sizeof(glm::vec4);
+      region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.imageOffset = {int32_t(x), int32_t(y), 0};
+      region.imageExtent = {1, 1, 1};
+      vkCmdCopyBufferToImage(commands, staging.handle(), images[i],
+                             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      layoutBarrier(commands, images[i], VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_GENERAL, VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+  });
+}
+
 }  // namespace render

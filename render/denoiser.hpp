@@ -45,6 +45,9 @@ class Denoiser {
   std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
   // Overwrites the history the next frame (of parity `nextParity`) will read.
   void fillHistory(uint32_t nextParity, const glm::vec4& history, const glm::vec4& moments) const;
+  // The same for one pixel of that history (rgba32f history and moments).
+  void writeHistoryTexel(uint32_t nextParity, uint32_t x, uint32_t y, const glm::vec4& history,
+                         const glm::vec4& moments) const;
 
  private:
   const StorageImage& imageFor(DenoiserImage which, uint32_t parity, uint32_t iterations) const;

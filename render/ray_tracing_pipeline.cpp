@@ -92,6 +92,15 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
                                        &createInfo, nullptr, &pipeline_),
           "vkCreateRayTracingPipelinesKHR");
   context.setName(pipeline_, VK_OBJECT_TYPE_PIPELINE, "ray tracing pipeline");
+  // A constructor that throws gets no destructor call: the pipeline must not outlive a failure
+  // further down (a lost device, exhausted memory for the binding table).
+  struct DestroyPipelineOnThrow {
+    VkDevice device;
+    VkPipeline* pipeline;
+    ~DestroyPipelineOnThrow() {
+      if (pipeline) vkDestroyPipeline(device, *pipeline, nullptr);
+    }
+  } destroyPipelineOnThrow{context.device(), &pipeline_};
 
   const uint32_t missCount = static_cast<uint32_t>(program.misses.size());
   const uint32_t hitCount = static_cast<uint32_t>(program.hitGroups.size());
@@ -130,6 +139,7 @@ RayTracingPipeline::RayTracingPipeline(const Context& context, VkPipelineLayout 
   raygenRegion_ = {base + layout_.raygen.offset, layout_.raygen.stride, layout_.raygen.size};
   missRegion_ = {base + layout_.miss.offset, layout_.miss.stride, layout_.miss.size};
   hitRegion_ = {base + layout_.hit.offset, layout_.hit.stride, layout_.hit.size};
+  destroyPipelineOnThrow.pipeline = nullptr;
 }
 
 RayTracingPipeline::~RayTracingPipeline() {

@@ -58,6 +58,14 @@ gpu::GpuLight toGpuLight(const LightDesc& light) {
 Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
                    const RendererOptions& options)
     : context_(context), options_(options), environment_(scene.environment) {
+  // A constructor that throws (a lost device, exhausted memory) gets no destructor call: this
+  // destroys the handles made so far instead (members with destructors release themselves).
+  struct DestroyHandlesOnThrow {
+    Renderer* renderer;
+    ~DestroyHandlesOnThrow() {
+      if (renderer) renderer->destroyHandles();
+    }
+  } destroyHandlesOnThrow{this};
   if (options.width == 0 || options.height == 0 || options.width > 16384 ||
       options.height > 16384) {
     throw RenderError("image size must be between 1x1 and 16384x16384");
@@ -210,9 +218,14 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   }
   VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
   vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &frameDone_), "vkCreateFence");
+  destroyHandlesOnThrow.renderer = nullptr;
 }
 
 Renderer::~Renderer() {
+  destroyHandles();
+}
+
+void Renderer::destroyHandles() {
   VkDevice device = context_.device();
   vkDeviceWaitIdle(device);
   if (frameDone_) vkDestroyFence(device, frameDone_, nullptr);
@@ -656,6 +669,12 @@ std::vector<glm::vec4> Renderer::readRadiance() const {
 void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments) {
   if (!denoiser_) throw RenderError("fillDenoiserHistory: this scene has no soft shadows");
   denoiser_->fillHistory(parity_, history, moments);
+}
+
+void Renderer::writeDenoiserHistoryTexel(uint32_t x, uint32_t y, const glm::vec4& history,
+                                         const glm::vec4& moments) {
+  if (!denoiser_) throw RenderError("writeDenoiserHistoryTexel: this scene has no soft shadows");
+  denoiser_->writeHistoryTexel(parity_, x, y, history, moments);
 }
 
 FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {

@@ -92,6 +92,9 @@ class Renderer {
   std::vector<glm::vec4> readDenoiser(DenoiserImage which) const;
   // Replaces the history the next frame reprojects (test hook: long histories, NaN).
   void fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments);
+  // The same for the one pixel (x, y) (test hook: a NaN or infinity in one place).
+  void writeDenoiserHistoryTexel(uint32_t x, uint32_t y, const glm::vec4& history,
+                                 const glm::vec4& moments);
   bool softShadows() const { return denoiser_ != nullptr; }
 
   // What each pixel's path reached in the last frame (rows top to bottom).
@@ -102,6 +105,7 @@ class Renderer {
   size_t triangleCount() const { return triangleCount_; }
 
  private:
+  void destroyHandles();  // what the destructor does, also for a constructor that throws
   void createDescriptors();
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);

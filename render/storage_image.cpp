@@ -9,6 +9,16 @@
 
 namespace render {
 
+namespace {
+
+void destroyImage(VkDevice device, VkImageView view, VkImage image, VkDeviceMemory memory) {
+  if (view) vkDestroyImageView(device, view, nullptr);
+  if (image) vkDestroyImage(device, image, nullptr);
+  if (memory) vkFreeMemory(device, memory, nullptr);
+}
+
+}  // namespace
+
 VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, VkFormat format,
                       VkImageUsageFlags usage, const std::string& name, VkDeviceMemory* memory) {
   VkDevice device = context.device();
@@ -31,12 +41,19 @@ VkImage createImage2D(const Context& context, uint32_t width, uint32_t height, V
   allocateInfo.allocationSize = requirements.size;
   allocateInfo.memoryTypeIndex =
       context.findMemoryType(requirements.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  VkResult result = vkAllocateMemory(device, &allocateInfo, nullptr, memory);
+  VkResult result = injectedFaultBefore("vkAllocateMemory");
+  if (result == VK_SUCCESS) result = vkAllocateMemory(device, &allocateInfo, nullptr, memory);
   if (result != VK_SUCCESS) {
     vkDestroyImage(device, image, nullptr);
-    vkCheck(result, "vkAllocateMemory");
+    vkCheck(result, ("vkAllocateMemory for " + name).c_str());
   }
-  vkCheck(vkBindImageMemory(device, image, *memory, 0), "vkBindImageMemory");
+  result = vkBindImageMemory(device, image, *memory, 0);
+  if (result != VK_SUCCESS) {
+    vkFreeMemory(device, *memory, nullptr);
+    *memory = VK_NULL_HANDLE;
+    vkDestroyImage(device, image, nullptr);
+    vkCheck(result, "vkBindImageMemory");
+  }
   return image;
 }
 
@@ -58,18 +75,21 @@ StorageImage::StorageImage(const Context& context, uint32_t width, uint32_t heig
     : device_(context.device()), width_(width), height_(height) {
   image_ = createImage2D(context, width, height, format, VK_IMAGE_USAGE_STORAGE_BIT | extraUsage,
                          name, &memory_);
-  view_ = createImageView(context, image_, format, name);
-  context.submitAndWait([&](VkCommandBuffer commands) {
-    imageLayoutBarrier(commands, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                       VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                       VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT);
-  });
+  try {
+    view_ = createImageView(context, image_, format, name);
+    context.submitAndWait([&](VkCommandBuffer commands) {
+      imageLayoutBarrier(commands, image_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                         VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                         VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT);
+    });
+  } catch (...) {  // the destructor does not run for a constructor that throws
+    destroyImage(device_, view_, image_, memory_);
+    throw;
+  }
 }
 
 StorageImage::~StorageImage() {
-  if (view_) vkDestroyImageView(device_, view_, nullptr);
-  if (image_) vkDestroyImage(device_, image_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  destroyImage(device_, view_, image_, memory_);
 }
 
 void uploadImage2D(const Context& context, VkImage image, uint32_t width, uint32_t height,

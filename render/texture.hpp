@@ -21,6 +21,8 @@ class Texture {
   VkImageView view() const { return view_; }
 
  private:
+  void destroyHandles();
+
   VkDevice device_;
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
