@@ -29,6 +29,7 @@
 #include "game/replay.hpp"
 #include "game/rules.hpp"
 #include "game/settings.hpp"
+#include "game/tick_clock.hpp"
 #include "game/user_paths.hpp"
 #include "render/context.hpp"
 #include "render/image_io.hpp"
@@ -43,9 +44,6 @@ namespace {
 
 constexpr int kWindowWidth = 1280, kWindowHeight = 720;
 constexpr double kTickSeconds = game::Rules::TICK_SECONDS;
-// A frame slower than this many ticks lets the game fall behind real time instead of
-// spending ever longer frames catching up.
-constexpr int kMaxTicksPerFrame = 5;
 constexpr double kOutcomeSeconds = 2.0;  // how long "won"/"lost" shows before moving on
 constexpr float kStickDegreesPerSecond = 150.0f;
 constexpr float kStickDeadZone = 0.2f;
@@ -573,7 +571,7 @@ class Game {
     simulationOptions.verticalFovDegrees = settings_.fieldOfViewDegrees;
     simulation_ =
         std::make_unique<sim::Simulation>(context_, compiler_, *level_, simulationOptions);
-    accumulator_ = 0.0;
+    tickClock_.reset();
     lastFrameAt_ = glfwGetTime();  // loading time is not play time
     outcomeAt_ = -1.0;
     std::printf("playing %s (%s) at %ux%u\n", level_->name.c_str(), file.c_str(), renderWidth_,
@@ -755,14 +753,9 @@ class Game {
 
   void runTicks(double elapsed) {
     if (simulation_->outcome() != game::Outcome::Playing) return;  // the world waits
-    accumulator_ += elapsed;
-    int due = int(accumulator_ / kTickSeconds);
-    if (due > kMaxTicksPerFrame) {
-      due = kMaxTicksPerFrame;
-      accumulator_ = due * kTickSeconds;  // drop the rest of the backlog
-    }
+    // At most TickClock::MAX_TICKS_PER_FRAME; the backlog of a longer frame is dropped.
+    const int due = tickClock_.advance(elapsed);
     if (due == 0) return;
-    accumulator_ -= due * kTickSeconds;
     const game::TickInput held = heldInput();
     // The mouse moved over the whole frame: spread it evenly over the frame's ticks.
     const glm::vec2 lookPerTick = pendingLook_ / float(due);
@@ -877,7 +870,7 @@ class Game {
   std::unique_ptr<sim::Simulation> simulation_;
   fs::path levelFile_;
   bool paused_ = false;
-  double accumulator_ = 0.0;  // real time not yet turned into ticks
+  game::TickClock tickClock_;  // real time into ticks
   double lastFrameAt_ = 0.0;
   double outcomeAt_ = -1.0;                // when the level was won or lost; < 0 while playing
   uint64_t ticksPlayed_ = 0;               // over all levels, for --quit-after-ticks
