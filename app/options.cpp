@@ -30,7 +30,8 @@ options:
   --frames N          frames to render (render: 1, bench: 300)
   --tonemap MODE      aces (default) or identity (exposure, then clamp)
   --exposure X        linear exposure multiplier (default 1)
-  --row-groups N      interleave launch rows in N groups (default 8, 1 = off)
+  --row-groups N      interleave launch rows in N groups (1 = off; default 8 on CPU drivers,
+                      1 on GPUs)
   --device SEL        device index or part of its name (see `sightline devices`)
   --validate          enable the Vulkan validation layer (with synchronization checks)
   --reference         render: ground truth, averaging --spp raw soft-shadow samples
@@ -47,6 +48,10 @@ options:
   --window WxH        play: the window's size (default 1280x720)
   --capture FILE.png  play, with --quit-after-ticks: save the window's last image as the
                       swapchain holds it (picture, HUD and text)
+  --csv FILE          bench: also write the table as CSV
+  --json FILE         bench: also write the table as JSON
+  --embree-frames N   bench: frames of the Embree CPU reference per level and size (default
+                      30, 0 = skip it)
 )";
 
 namespace {
@@ -136,6 +141,12 @@ Options parseOptions(int argc, char** argv) {
       options.capture = value();
     } else if (argument == "--record") {
       options.record = value();
+    } else if (argument == "--csv") {
+      options.csv = value();
+    } else if (argument == "--json") {
+      options.json = value();
+    } else if (argument == "--embree-frames") {
+      options.embreeFrames = parseCount("--embree-frames", value(), 0, 1000000);
     } else if (argument == "--trace") {
       options.trace = value();
     } else if (argument == "--help" || argument == "-h") {

@@ -28,7 +28,7 @@ struct Options {
   std::optional<uint32_t> frames;
   render::Tonemap tonemap = render::Tonemap::Aces;
   float exposure = 1.0f;
-  uint32_t rowGroups = 8;
+  uint32_t rowGroups = 0;  // 0: the renderer's choice for the device
   std::string device;
   bool validate = false;
   bool watch = false;
@@ -43,6 +43,9 @@ struct Options {
   bool resetProgress = false;                   // play: lock every level but the first again
   std::optional<std::pair<uint32_t, uint32_t>> windowSize;  // play: --window WxH
   std::optional<std::filesystem::path> capture;  // play: the last frame's window image (PNG)
+  std::optional<std::filesystem::path> csv;      // bench: the table as CSV
+  std::optional<std::filesystem::path> json;     // bench: the table as JSON
+  uint32_t embreeFrames = 30;                    // bench: Embree reference frames (0: none)
 };
 
 // Throws UsageError naming the option and what was expected.

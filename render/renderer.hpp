@@ -31,7 +31,8 @@ struct RendererOptions {
   uint32_t height = 180;
   // Launch rows are dealt to image rows in this many interleaved groups (1 = off), so a CPU
   // driver's contiguous per-thread blocks each get a share of every part of the image.
-  uint32_t rowGroups = 8;
+  // 0: 8 on CPU drivers, 1 on GPUs.
+  uint32_t rowGroups = 0;
   // Build the all-features pipeline instead of the scene's own variant (for measuring it).
   bool allFeatures = false;
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)

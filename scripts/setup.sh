@@ -8,7 +8,7 @@ packages=(
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
   libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core
+  libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core libembree-dev
   xvfb xauth
   clang libclang-rt-14-dev python3 python3-jsonschema
 )
@@ -18,7 +18,7 @@ mesa_min_version="24.1"
 manual_hint() {
   echo "Install by hand: a C++20 compiler, CMake >= 3.25, the Vulkan loader and headers," \
     "the Khronos validation layers, glslang (library and tools), GLM, GLFW 3, tinygltf," \
-    "nlohmann-json, stb, GoogleTest, Xvfb, and a Vulkan driver with ray tracing" \
+    "nlohmann-json, stb, GoogleTest, Embree 3, Xvfb, and a Vulkan driver with ray tracing" \
     "(Mesa >= ${mesa_min_version} lavapipe, or an NVIDIA/AMD driver)." >&2
 }
 
