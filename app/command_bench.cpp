@@ -63,6 +63,7 @@ Measurement measure(const render::Context& context, render::ShaderCompiler& comp
   rendererOptions.width = width;
   rendererOptions.height = height;
   rendererOptions.rowGroups = options.rowGroups;
+  rendererOptions.subgroupCounters = options.subgroupCounters;
   rendererOptions.allFeatures = allFeatures;
   render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
   for (uint32_t i = 0; i < 3; ++i) renderer.renderFrame(frameFor(level, options, i), false);

@@ -43,6 +43,7 @@ RenderResult renderToPng(const render::Context& context, render::ShaderCompiler&
   rendererOptions.width = options.width;
   rendererOptions.height = options.height;
   rendererOptions.rowGroups = options.rowGroups;
+  rendererOptions.subgroupCounters = options.subgroupCounters;
   render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
   std::vector<double> times;
   RenderResult result;

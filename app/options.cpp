@@ -32,6 +32,8 @@ options:
   --exposure X        linear exposure multiplier (default 1)
   --row-groups N      interleave launch rows in N groups (1 = off; default 8 on CPU drivers,
                       1 on GPUs)
+  --no-subgroup-counters  render, bench: one counter atomic per pixel even where the GPU could
+                      sum them per subgroup first (to measure the difference)
   --device SEL        device index or part of its name (see `sightline devices`)
   --validate          enable the Vulkan validation layer (with synchronization checks)
   --reference         render: ground truth, averaging --spp raw soft-shadow samples
@@ -113,6 +115,8 @@ Options parseOptions(int argc, char** argv) {
         throw UsageError("--exposure: expected a number >= 0, got '" + text + "'");
     } else if (argument == "--row-groups") {
       options.rowGroups = parseCount("--row-groups", value(), 1, 64);
+    } else if (argument == "--no-subgroup-counters") {
+      options.subgroupCounters = false;
     } else if (argument == "--device") {
       options.device = value();
     } else if (argument == "--validate") {

@@ -28,7 +28,8 @@ struct Options {
   std::optional<uint32_t> frames;
   render::Tonemap tonemap = render::Tonemap::Aces;
   float exposure = 1.0f;
-  uint32_t rowGroups = 0;  // 0: the renderer's choice for the device
+  uint32_t rowGroups = 0;        // 0: the renderer's choice for the device
+  bool subgroupCounters = true;  // --no-subgroup-counters: one atomic per pixel
   std::string device;
   bool validate = false;
   bool watch = false;

@@ -292,10 +292,18 @@ Context::Context(const ContextOptions& options) : options_(options) {
     rayTracingProperties_.sType =
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR;
     rayTracingProperties_.pNext = &accelerationStructureProperties_;
+    VkPhysicalDeviceSubgroupProperties subgroupProperties{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+    accelerationStructureProperties_.pNext = &subgroupProperties;
     VkPhysicalDeviceProperties2 properties2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
                                             &rayTracingProperties_};
     vkGetPhysicalDeviceProperties2(physicalDevice_, &properties2);
     properties_ = properties2.properties;
+    const VkSubgroupFeatureFlags neededOperations =
+        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+    raygenSubgroupArithmetic_ =
+        (subgroupProperties.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR) != 0 &&
+        (subgroupProperties.supportedOperations & neededOperations) == neededOperations;
     rayTracingProperties_.pNext = nullptr;
     accelerationStructureProperties_.pNext = nullptr;
     vkGetPhysicalDeviceMemoryProperties(physicalDevice_, &memoryProperties_);

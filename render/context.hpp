@@ -83,6 +83,9 @@ class Context {
   bool isCpuDevice() const { return deviceInfo_.type == VK_PHYSICAL_DEVICE_TYPE_CPU; }
   bool validationEnabled() const { return validationEnabled_; }
   bool timestampsSupported() const { return timestampsSupported_; }
+  // Subgroup add and elect in ray-gen shaders (NVIDIA: yes; lavapipe 25: compute and fragment
+  // only): the ray-gen shader then sums its counters per subgroup before the atomics.
+  bool raygenSubgroupArithmetic() const { return raygenSubgroupArithmetic_; }
 
   uint32_t findMemoryType(uint32_t typeBits, VkMemoryPropertyFlags required,
                           VkMemoryPropertyFlags preferred = 0) const;
@@ -131,6 +134,7 @@ class Context {
   VkCommandPool commandPool_ = VK_NULL_HANDLE;
   DeviceInfo deviceInfo_;
   bool timestampsSupported_ = false;
+  bool raygenSubgroupArithmetic_ = false;
   RayTracingFunctions rt_;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memoryProperties_{};

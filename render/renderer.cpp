@@ -366,6 +366,8 @@ void Renderer::createDescriptors() {
 void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                                bool exposureProbes) {
   pipelineDescription_ = describePipeline(features);
+  const bool subgroupCounters = options_.subgroupCounters && context_.raygenSubgroupArithmetic();
+  pipelineDescription_.defines.push_back({"SUBGROUP_COUNTERS", subgroupCounters ? "1" : "0"});
   const ShaderDefines& defines = pipelineDescription_.defines;
   auto load = [&](const std::string& file) {
     return ShaderCode{file, compiler.compile(file, defines).spirv};

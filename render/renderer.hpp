@@ -35,6 +35,9 @@ struct RendererOptions {
   uint32_t rowGroups = 0;
   // Build the all-features pipeline instead of the scene's own variant (for measuring it).
   bool allFeatures = false;
+  // Sum the ray and focus-pixel counters per subgroup before the atomics where the device can
+  // (false: one atomic per pixel everywhere, for measuring the difference).
+  bool subgroupCounters = true;
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;

@@ -97,4 +97,29 @@ TEST_F(ShaderCompilerTest, shipped_shaders_all_compile) {
   }
 }
 
+// Whether a SPIR-V module declares a capability (OpCapability is opcode 17, two words long).
+bool declaresCapability(const std::vector<uint32_t>& spirv, uint32_t capability) {
+  for (size_t word = 5; word < spirv.size();) {
+    const uint32_t opcode = spirv[word] & 0xFFFFu;
+    const uint32_t length = spirv[word] >> 16;
+    if (length == 0) break;
+    if (opcode == 17 && word + 1 < spirv.size() && spirv[word + 1] == capability) return true;
+    word += length;
+  }
+  return false;
+}
+
+TEST_F(ShaderCompilerTest, subgroup_counters_use_subgroup_arithmetic_only_when_asked) {
+  constexpr uint32_t groupNonUniformArithmetic = 63;
+  render::ShaderCompiler shipped(test::sourceDir() / "shaders", root_ / "cache");
+  for (const char* soft : {"0", "1"}) {
+    const auto with =
+        shipped.compile("raygen.rgen", {{"SOFT_SHADOWS", soft}, {"SUBGROUP_COUNTERS", "1"}});
+    const auto without =
+        shipped.compile("raygen.rgen", {{"SOFT_SHADOWS", soft}, {"SUBGROUP_COUNTERS", "0"}});
+    EXPECT_TRUE(declaresCapability(with.spirv, groupNonUniformArithmetic)) << soft;
+    EXPECT_FALSE(declaresCapability(without.spirv, groupNonUniformArithmetic)) << soft;
+  }
+}
+
 }  // namespace
