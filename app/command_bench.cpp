@@ -59,11 +59,7 @@ Measurement measure(const render::Context& context, render::ShaderCompiler& comp
                     const game::Level& level, const Options& options, uint32_t width,
                     uint32_t height, uint32_t frames, bool allFeatures,
                     InterleavedReference* reference = nullptr) {
-  render::RendererOptions rendererOptions;
-  rendererOptions.width = width;
-  rendererOptions.height = height;
-  rendererOptions.rowGroups = options.rowGroups;
-  rendererOptions.subgroupCounters = options.subgroupCounters;
+  render::RendererOptions rendererOptions = rendererOptionsFor(options, width, height);
   rendererOptions.allFeatures = allFeatures;
   render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
   for (uint32_t i = 0; i < 3; ++i) renderer.renderFrame(frameFor(level, options, i), false);
@@ -137,6 +133,8 @@ struct BenchRow {
     return double(own.rays()) / (ms * 1000.0);
   }
   double ownOverAll() const { return own.medianMs / all.medianMs; }
+  // The trace pass's ray rate as a fraction of Embree's (only with an Embree measurement).
+  double traceOverEmbree() const { return traceMraysPerSecond() / embree->mraysPerSecond(); }
 };
 
 std::string csvField(const std::string& text) {
@@ -162,8 +160,7 @@ void writeCsv(const fs::path& file, const std::vector<BenchRow>& rows) {
         << ',' << row.levelSwitch.totalMs() << ',' << row.traceMraysPerSecond() << ',';
     if (row.embree) {
       out << row.embree->frames << ',' << row.embree->medianMs << ',' << row.embree->rays << ','
-          << row.embree->mraysPerSecond() << ','
-          << row.traceMraysPerSecond() / row.embree->mraysPerSecond() << '\n';
+          << row.embree->mraysPerSecond() << ',' << row.traceOverEmbree() << '\n';
     } else {
       out << "0,,,,\n";
     }
@@ -204,12 +201,11 @@ void writeJson(const fs::path& file, const render::Context& context, uint32_t em
                                       {"total", row.levelSwitch.totalMs()}}},
                                     {"trace_mrays_per_s", row.traceMraysPerSecond()}};
     if (row.embree) {
-      entry["embree"] = {
-          {"frames", row.embree->frames},
-          {"median_ms", row.embree->medianMs},
-          {"rays_per_frame", row.embree->rays},
-          {"mrays_per_s", row.embree->mraysPerSecond()},
-          {"trace_over_embree", row.traceMraysPerSecond() / row.embree->mraysPerSecond()}};
+      entry["embree"] = {{"frames", row.embree->frames},
+                         {"median_ms", row.embree->medianMs},
+                         {"rays_per_frame", row.embree->rays},
+                         {"mrays_per_s", row.embree->mraysPerSecond()},
+                         {"trace_over_embree", row.traceOverEmbree()}};
     } else {
       entry["embree"] = nullptr;
     }
@@ -277,8 +273,7 @@ int commandBench(const Options& options) {
           pass.denoiseMs, pass.tonemapMs, pass.readbackMs, row.mraysPerSecond(), row.all.medianMs,
           row.ownOverAll(), row.levelSwitch.totalMs(), row.traceMraysPerSecond());
       if (row.embree)
-        std::printf(" %9.2f %8.2f\n", row.embree->mraysPerSecond(),
-                    row.traceMraysPerSecond() / row.embree->mraysPerSecond());
+        std::printf(" %9.2f %8.2f\n", row.embree->mraysPerSecond(), row.traceOverEmbree());
       else
         std::printf(" %9s %8s\n", "-", "-");
       std::fflush(stdout);

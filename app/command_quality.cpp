@@ -76,10 +76,8 @@ class QualityBench {
         compiler_(makeCompiler(findDataRoot())) {}
 
   std::unique_ptr<render::Renderer> renderer() {
-    render::RendererOptions rendererOptions;
-    rendererOptions.width = options_.width;
-    rendererOptions.height = options_.height;
-    rendererOptions.rowGroups = options_.rowGroups;
+    render::RendererOptions rendererOptions =
+        rendererOptionsFor(options_, options_.width, options_.height);
     rendererOptions.allFeatures = true;  // soft shadows even for a level that has none
     return std::make_unique<render::Renderer>(context_, compiler_, scene_, rendererOptions);
   }

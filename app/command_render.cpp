@@ -39,12 +39,8 @@ struct RenderResult {
 RenderResult renderToPng(const render::Context& context, render::ShaderCompiler& compiler,
                          const game::Level& level, const Options& options, uint32_t frames,
                          const fs::path& out) {
-  render::RendererOptions rendererOptions;
-  rendererOptions.width = options.width;
-  rendererOptions.height = options.height;
-  rendererOptions.rowGroups = options.rowGroups;
-  rendererOptions.subgroupCounters = options.subgroupCounters;
-  render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
+  render::Renderer renderer(context, compiler, game::buildSceneDesc(level),
+                            rendererOptionsFor(options, options.width, options.height));
   std::vector<double> times;
   RenderResult result;
   const bool showProgress = options.reference && frames > 1;

@@ -32,8 +32,8 @@ options:
   --exposure X        linear exposure multiplier (default 1)
   --row-groups N      interleave launch rows in N groups (1 = off; default 8 on CPU drivers,
                       1 on GPUs)
-  --no-subgroup-counters  render, bench: one counter atomic per pixel even where the GPU could
-                      sum them per subgroup first (to measure the difference)
+  --no-subgroup-counters  render, bench, bench-quality: one counter atomic per pixel even
+                      where the GPU could sum them per subgroup first (to measure the difference)
   --device SEL        device index or part of its name (see `sightline devices`)
   --validate          enable the Vulkan validation layer (with synchronization checks)
   --reference         render: ground truth, averaging --spp raw soft-shadow samples

@@ -18,6 +18,16 @@ render::ShaderCompiler makeCompiler(const fs::path& dataRoot) {
                                 render::ShaderCompiler::defaultCacheDirectory());
 }
 
+render::RendererOptions rendererOptionsFor(const Options& options, uint32_t width,
+                                           uint32_t height) {
+  render::RendererOptions rendererOptions;
+  rendererOptions.width = width;
+  rendererOptions.height = height;
+  rendererOptions.rowGroups = options.rowGroups;
+  rendererOptions.subgroupCounters = options.subgroupCounters;
+  return rendererOptions;
+}
+
 render::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index) {
   render::FrameDesc frame;
   frame.camera = level.camera;

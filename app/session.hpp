@@ -7,12 +7,15 @@
 #include "app/options.hpp"
 #include "game/level.hpp"
 #include "render/context.hpp"
+#include "render/renderer.hpp"
 #include "render/shader_compiler.hpp"
 
 namespace app {
 
 render::ContextOptions contextOptions(const Options& options);
 render::ShaderCompiler makeCompiler(const std::filesystem::path& dataRoot);
+// The renderer's settings the command line gives (size, row groups, subgroup counters).
+render::RendererOptions rendererOptionsFor(const Options& options, uint32_t width, uint32_t height);
 render::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index);
 double median(std::vector<double> values);
 // Non-zero (3) when the validation layer reported anything, after printing how many.

@@ -17,6 +17,7 @@
 #include <glm/glm.hpp>
 
 #include "render/gpu_types.hpp"
+#include "render/render_space.hpp"
 
 namespace reference {
 namespace {
@@ -26,21 +27,10 @@ using render::MaterialKind;
 
 constexpr float kFar = 1.0e30f;  // FAR in raygen.rgen
 
-// Per-ray state of a glass ray; the filter function finds it through the context pointer.
-struct GlassRayContext {
-  RTCIntersectContext embree;  // first member: Embree passes a pointer to it
-  uint32_t surfacesCrossed = 0;
-};
-
 // Glass rays see every glass surface up to tMax and stop at none, like the any-hit shader that
 // ignores each intersection.
 void passThroughGlass(const RTCFilterFunctionNArguments* args) {
-  auto* context = reinterpret_cast<GlassRayContext*>(args->context);
-  for (unsigned i = 0; i < args->N; ++i) {
-    if (args->valid[i] == 0) continue;
-    ++context->surfacesCrossed;
-    args->valid[i] = 0;
-  }
+  for (unsigned i = 0; i < args->N; ++i) args->valid[i] = 0;
 }
 
 // ray_offset.glsl: the largest quantity a hit position was computed from (its ray's origin
@@ -54,26 +44,6 @@ glm::vec3 offsetRayOrigin(const glm::vec3& position, const glm::vec3& geometricN
                           const glm::vec3& arriving, float magnitude) {
   constexpr float kRelativeStep = 1.0f / 65536.0f;
   return position + (geometricNormal - arriving) * std::max(magnitude * kRelativeStep, 1.0e-30f);
-}
-
-// The camera basis of Renderer::writeFrameUniforms: right and up scaled to the image plane.
-struct CameraBasis {
-  glm::vec3 position, forward, right, up;
-};
-
-// The camera sits at the origin of camera-relative space.
-CameraBasis cameraBasis(const render::CameraDesc& camera, uint32_t width, uint32_t height) {
-  const float yaw = glm::radians(camera.yawDegrees);
-  const float pitch = glm::radians(camera.pitchDegrees);
-  const glm::vec3 forward(-std::sin(yaw) * std::cos(pitch), std::sin(pitch),
-                          -std::cos(yaw) * std::cos(pitch));
-  glm::vec3 right = glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f));
-  right = glm::length(right) > 1e-6f ? glm::normalize(right)
-                                     : glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalf = std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f);
-  const float aspect = float(width) / float(height);
-  return {glm::vec3(0.0f), forward, right * tanHalf * aspect, up * tanHalf};
 }
 
 struct Light {
@@ -120,17 +90,14 @@ struct EmbreeTracer::Scene {
     if (origin == camera) return;
     origin = camera;
     for (const auto& [id, objectToWorld] : placed) {
-      glm::mat4 transform = objectToWorld;
-      transform[3] =
-          glm::vec4(glm::vec3(glm::dvec3(objectToWorld[3]) - camera), objectToWorld[3].w);
+      const glm::mat4 transform = render::toRenderSpace(objectToWorld, camera);
       RTCGeometry geometry = rtcGetGeometry(top, id);
       rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR, &transform[0][0]);
       rtcCommitGeometry(geometry);
     }
     rtcCommitScene(top);
     check("moving the instances");
-    for (Light& light : lights)
-      light.position = glm::vec3(glm::dvec3(light.worldPosition) - camera);
+    for (Light& light : lights) light.position = render::toRenderSpace(light.worldPosition, camera);
   }
 
   ~Scene() {
@@ -205,10 +172,7 @@ EmbreeTracer::EmbreeTracer(const render::SceneDesc& scene, const render::Pipelin
     rtcSetGeometryInstancedScene(instance, meshScene);
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
                             &desc.objectToWorld[0][0]);
-    // The renderer's TLAS masks (render/renderer.cpp).
-    rtcSetGeometryMask(instance, glass
-                                     ? MASK_GLASS | (desc.castsShadow ? MASK_GLASS_SHADOW : 0u)
-                                     : MASK_VISIBLE | (desc.castsShadow ? MASK_SHADOW_CASTER : 0u));
+    rtcSetGeometryMask(instance, render::gpu::instanceMask(glass, desc.castsShadow));
     rtcCommitGeometry(instance);
     rtcAttachGeometryByID(s.top, instance, i);  // instID = the scene's instance index
     s.placed.emplace_back(i, desc.objectToWorld);
@@ -357,15 +321,14 @@ class PixelTracer {
   }
 
   void traceGlass(const glm::vec3& origin, const glm::vec3& direction, float tMax, uint32_t mask) {
-    GlassRayContext context;
-    rtcInitIntersectContext(&context.embree);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
     RTCRayHit rayHit{};
     rayHit.ray = makeRay(origin, direction, tMax, mask);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(top_, &context.embree, &rayHit);
+    rtcIntersect1(top_, &context, &rayHit);
     ++counts.secondary;
-    glassSurfacesCrossed_ += context.surfacesCrossed;
   }
 
   void traceShadow(const glm::vec3& origin, const glm::vec3& toLight, float distance) {
@@ -408,7 +371,6 @@ class PixelTracer {
   const std::vector<Instance>& instances_;
   const std::vector<Light>& lights_;
   const render::PipelineFeatures& features_;
-  uint64_t glassSurfacesCrossed_ = 0;
 };
 
 }  // namespace
@@ -418,7 +380,8 @@ ReferenceFrame EmbreeTracer::traceFrame(const render::CameraDesc& camera, uint32
   if (width == 0 || height == 0) throw std::invalid_argument("traceFrame: empty image");
   Scene& s = *scene_;
   s.moveOrigin(glm::dvec3(camera.position));  // a refit of the top level, not timed
-  const CameraBasis basis = cameraBasis(camera, width, height);
+  // The renderer's camera, at the origin of camera-relative space.
+  const render::CameraBasis basis = render::cameraBasis(camera, float(width) / float(height));
   ReferenceFrame frame;
   frame.width = width;
   frame.height = height;
@@ -436,7 +399,7 @@ ReferenceFrame EmbreeTracer::traceFrame(const render::CameraDesc& camera, uint32
             1.0f;
         const glm::vec3 direction =
             glm::normalize(basis.forward + ndc.x * basis.right - ndc.y * basis.up);
-        frame.finalInstances[size_t(y) * width + x] = tracer.trace(basis.position, direction);
+        frame.finalInstances[size_t(y) * width + x] = tracer.trace(glm::vec3(0.0f), direction);
       }
     }
     counts[thread] = tracer.counts;

@@ -18,3 +18,12 @@ static_assert(sizeof(ProbeSetup) == 16 * (1 + MAX_FOCUS_PROBES + MAX_EXPOSURE_PR
 static_assert(sizeof(ProbePoint) == 32);
 static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 }  // namespace render::gpu
+
+namespace render::gpu {
+// An instance's TLAS visibility mask: glass is seen only by glass rays, everything else by
+// surface rays; shadow casters also by the matching shadow rays.
+inline constexpr uint32_t instanceMask(bool glass, bool castsShadow) {
+  return glass ? MASK_GLASS | (castsShadow ? MASK_GLASS_SHADOW : 0u)
+               : MASK_VISIBLE | (castsShadow ? MASK_SHADOW_CASTER : 0u);
+}
+}  // namespace render::gpu

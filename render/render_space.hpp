@@ -3,9 +3,34 @@
 // on the CPU. Floats near the camera keep their full precision wherever the level lies (at
 // 1e5 m a world float is only good to 7.8 mm, and ray offsets scaled to it are metres long).
 // The TLAS, lights and probe points are in render space; the camera sits at its origin.
+#include <cmath>
+
 #include <glm/glm.hpp>
 
+#include "render/scene_desc.hpp"
+
 namespace render {
+
+// The camera's view in render space: it sits at the origin looking along `forward`; `right`
+// and `up` span the image plane at distance 1 (scaled by the field of view and the aspect), so
+// a pixel's ray is forward + ndc.x * right - ndc.y * up.
+struct CameraBasis {
+  glm::vec3 forward, right, up;
+};
+
+inline CameraBasis cameraBasis(const CameraDesc& camera, float aspect) {
+  const float yaw = glm::radians(camera.yawDegrees);
+  const float pitch = glm::radians(camera.pitchDegrees);
+  const glm::vec3 forward(-std::sin(yaw) * std::cos(pitch), std::sin(pitch),
+                          -std::cos(yaw) * std::cos(pitch));
+  glm::vec3 right = glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f));
+  // Looking straight up or down: keep the yaw's right vector.
+  right = glm::length(right) > 1e-6f ? glm::normalize(right)
+                                     : glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
+  const glm::vec3 up = glm::cross(right, forward);
+  const float tanHalf = std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f);
+  return {forward, right * tanHalf * aspect, up * tanHalf};
+}
 
 inline glm::vec3 toRenderSpace(const glm::vec3& worldPoint, const glm::dvec3& origin) {
   return glm::vec3(glm::dvec3(worldPoint) - origin);

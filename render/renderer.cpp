@@ -182,13 +182,12 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
     const InstanceDesc& instance = scene.instances[i];
     const bool glass = scene.materials[instance.material].kind == MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
+    tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow);
     if (glass) {
       // Non-opaque, so the glass any-hit shader runs; only glass rays see it.
-      tlasInstance.mask = MASK_GLASS | (instance.castsShadow ? MASK_GLASS_SHADOW : 0u);
       tlasInstance.hitGroup = HIT_GROUP_GLASS;
       tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;
     } else {
-      tlasInstance.mask = MASK_VISIBLE | (instance.castsShadow ? MASK_SHADOW_CASTER : 0u);
       tlasInstance.hitGroup = HIT_GROUP_SURFACE;
       tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
     }
@@ -515,25 +514,14 @@ void Renderer::setLightEnabled(uint32_t light, bool enabled) {
 }
 
 void Renderer::writeFrameUniforms(const FrameDesc& frame) {
-  const CameraDesc& camera = frame.camera;
-  const float yaw = glm::radians(camera.yawDegrees);
-  const float pitch = glm::radians(camera.pitchDegrees);
-  const glm::vec3 forward(-std::sin(yaw) * std::cos(pitch), std::sin(pitch),
-                          -std::cos(yaw) * std::cos(pitch));
-  const glm::vec3 worldUp(0.0f, 1.0f, 0.0f);
-  glm::vec3 right = glm::cross(forward, worldUp);
-  // Looking straight up or down: keep the yaw's right vector.
-  right = glm::length(right) > 1e-6f ? glm::normalize(right)
-                                     : glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
-  const glm::vec3 up = glm::cross(right, forward);
-  const float tanHalf = std::tan(glm::radians(camera.verticalFovDegrees) * 0.5f);
-  const float aspect = float(options_.width) / float(options_.height);
+  const CameraBasis camera =
+      cameraBasis(frame.camera, float(options_.width) / float(options_.height));
 
   gpu::FrameUniforms uniforms{};
   uniforms.cameraPosition = glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);  // render space is camera-centred
-  uniforms.cameraRight = glm::vec4(right * tanHalf * aspect, 0.0f);
-  uniforms.cameraUp = glm::vec4(up * tanHalf, 0.0f);
-  uniforms.cameraForward = glm::vec4(forward, 0.0f);
+  uniforms.cameraRight = glm::vec4(camera.right, 0.0f);
+  uniforms.cameraUp = glm::vec4(camera.up, 0.0f);
+  uniforms.cameraForward = glm::vec4(camera.forward, 0.0f);
   uniforms.skyZenith = glm::vec4(environment_.skyZenith, 0.0f);
   uniforms.skyHorizon = glm::vec4(environment_.skyHorizon, 0.0f);
   uniforms.ambient = glm::vec4(environment_.ambient, 0.0f);
@@ -547,9 +535,9 @@ void Renderer::writeFrameUniforms(const FrameDesc& frame) {
   constexpr double kCutDistance = 1.0;
   constexpr float kCutCosine = 0.7f;
   const glm::dvec3 origin = renderOrigin_.value_or(glm::dvec3(0.0));
-  const bool cut = previousUniforms_ &&
-                   (glm::distance(previousOrigin_, origin) > kCutDistance ||
-                    glm::dot(glm::vec3(previousUniforms_->cameraForward), forward) < kCutCosine);
+  const bool cut = previousUniforms_ && (glm::distance(previousOrigin_, origin) > kCutDistance ||
+                                         glm::dot(glm::vec3(previousUniforms_->cameraForward),
+                                                  camera.forward) < kCutCosine);
   const bool reset = frame.resetHistory || !previousUniforms_ || cut;
   const gpu::FrameUniforms& previous = previousUniforms_ ? *previousUniforms_ : uniforms;
   // The previous camera in this frame's render space.
