@@ -249,7 +249,7 @@ int commandBench(const Options& options) {
     const game::Level level = game::loadLevel(levelFile);
     std::optional<reference::EmbreeTracer> tracer;
     if (options.embreeFrames > 0) {
-      const render::SceneDesc scene = game::buildSceneDesc(level);
+      const scene::SceneDesc scene = game::buildSceneDesc(level);
       tracer.emplace(scene, render::featuresOf(scene), kEmbreeThreads);
     }
     for (const auto& [width, height] : sizes) {

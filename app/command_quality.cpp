@@ -12,7 +12,7 @@
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
-#include "render/color.hpp"
+#include "scene/color.hpp"
 #include "render/image_metrics.hpp"
 #include "render/renderer.hpp"
 
@@ -56,8 +56,8 @@ Images capture(const render::Renderer& renderer) {
   return images;
 }
 
-render::CameraDesc cameraAt(const game::Level& level, uint32_t frame, bool moving) {
-  render::CameraDesc camera = level.camera;
+scene::CameraDesc cameraAt(const game::Level& level, uint32_t frame, bool moving) {
+  scene::CameraDesc camera = level.camera;
   if (moving) {
     const float yaw = glm::radians(camera.yawDegrees);
     const glm::vec3 right(std::cos(yaw), 0.0f, -std::sin(yaw));
@@ -82,14 +82,14 @@ class QualityBench {
     return std::make_unique<render::Renderer>(context_, compiler_, scene_, rendererOptions);
   }
 
-  render::FrameDesc frame(uint32_t index, const render::CameraDesc& camera, bool reference) {
-    render::FrameDesc frame = frameFor(level_, options_, index);
+  scene::FrameDesc frame(uint32_t index, const scene::CameraDesc& camera, bool reference) {
+    scene::FrameDesc frame = frameFor(level_, options_, index);
     frame.camera = camera;
     frame.referenceAccumulation = reference;
     return frame;
   }
 
-  Images reference(const render::CameraDesc& camera, uint32_t samples) {
+  Images reference(const scene::CameraDesc& camera, uint32_t samples) {
     auto r = renderer();
     for (uint32_t i = 0; i < samples; ++i)
       r->renderFrame(frame(kReferenceFirstFrame + i, camera, true), i + 1 == samples);
@@ -105,7 +105,7 @@ class QualityBench {
     r->renderFrame(frame(kWarmUpFrame, cameraAt(level_, 0, moving), raw), false);
     double gpuMs = 0.0;
     for (uint32_t i = 0; i < frames; ++i) {
-      render::FrameDesc desc = frame(i, cameraAt(level_, i, moving), raw);
+      scene::FrameDesc desc = frame(i, cameraAt(level_, i, moving), raw);
       desc.resetHistory = i == 0;
       const render::FrameStats stats = r->renderFrame(desc, i + 1 == frames);
       const double frameMs = stats.gpu.traceMs + stats.gpu.denoiseMs + stats.gpu.tonemapMs;
@@ -119,7 +119,7 @@ class QualityBench {
  private:
   const game::Level& level_;
   const Options& options_;
-  render::SceneDesc scene_;
+  scene::SceneDesc scene_;
   render::Context context_;
   render::ShaderCompiler compiler_;
 };

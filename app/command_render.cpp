@@ -45,7 +45,7 @@ RenderResult renderToPng(const render::Context& context, render::ShaderCompiler&
   RenderResult result;
   const bool showProgress = options.reference && frames > 1;
   for (uint32_t i = 0; i < frames; ++i) {
-    render::FrameDesc frame = frameFor(level, options, i);
+    scene::FrameDesc frame = frameFor(level, options, i);
     frame.referenceAccumulation = options.reference;
     result.last = renderer.renderFrame(frame, i + 1 == frames);
     times.push_back(result.last.milliseconds);

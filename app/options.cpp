@@ -101,9 +101,9 @@ Options parseOptions(int argc, char** argv) {
     } else if (argument == "--tonemap") {
       const std::string mode = value();
       if (mode == "aces")
-        options.tonemap = render::Tonemap::Aces;
+        options.tonemap = scene::Tonemap::Aces;
       else if (mode == "identity")
-        options.tonemap = render::Tonemap::Identity;
+        options.tonemap = scene::Tonemap::Identity;
       else
         throw UsageError("--tonemap: expected aces or identity, got '" + mode + "'");
     } else if (argument == "--exposure") {

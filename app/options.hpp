@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace app {
 
@@ -26,7 +26,7 @@ struct Options {
   bool sizeGiven = false;
   std::optional<std::filesystem::path> out;
   std::optional<uint32_t> frames;
-  render::Tonemap tonemap = render::Tonemap::Aces;
+  scene::Tonemap tonemap = scene::Tonemap::Aces;
   float exposure = 1.0f;
   uint32_t rowGroups = 0;        // 0: the renderer's choice for the device
   bool subgroupCounters = true;  // --no-subgroup-counters: one atomic per pixel

@@ -28,8 +28,8 @@ render::RendererOptions rendererOptionsFor(const Options& options, uint32_t widt
   return rendererOptions;
 }
 
-render::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index) {
-  render::FrameDesc frame;
+scene::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index) {
+  scene::FrameDesc frame;
   frame.camera = level.camera;
   frame.exposure = options.exposure;
   frame.tonemap = options.tonemap;

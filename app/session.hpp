@@ -16,7 +16,7 @@ render::ContextOptions contextOptions(const Options& options);
 render::ShaderCompiler makeCompiler(const std::filesystem::path& dataRoot);
 // The renderer's settings the command line gives (size, row groups, subgroup counters).
 render::RendererOptions rendererOptionsFor(const Options& options, uint32_t width, uint32_t height);
-render::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index);
+scene::FrameDesc frameFor(const game::Level& level, const Options& options, uint32_t index);
 double median(std::vector<double> values);
 // Non-zero (3) when the validation layer reported anything, after printing how many.
 int validationExitCode(const render::Context& context);

@@ -144,7 +144,7 @@ std::pair<glm::vec3, glm::vec3> closestSegmentTriangle(const glm::vec3& p, const
   return best;
 }
 
-TriangleCollider::TriangleCollider(const render::MeshData& mesh) {
+TriangleCollider::TriangleCollider(const scene::MeshData& mesh) {
   const size_t count = mesh.indices.size() / 3;
   std::vector<glm::vec3> corners(3 * count);
   for (size_t i = 0; i < 3 * count; ++i) corners[i] = mesh.vertices[mesh.indices[i]].position;
@@ -232,7 +232,7 @@ std::optional<std::pair<float, uint32_t>> TriangleCollider::rayCast(const glm::v
 
 CollisionWorld::CollisionWorld(const Level& level) {
   colliders_.reserve(level.meshes.size());
-  for (const render::MeshData& mesh : level.meshes) colliders_.emplace_back(mesh);
+  for (const scene::MeshData& mesh : level.meshes) colliders_.emplace_back(mesh);
   entities_.resize(level.entities.size());
   for (size_t i = 0; i < level.entities.size(); ++i) {
     entities_[i].collider = level.entities[i].mesh;

@@ -28,7 +28,7 @@ Aabb transformAabb(const Aabb& box, const glm::mat4& transform);
 // big glTF mesh costs a few node tests per query instead of a scan of every triangle.
 class TriangleCollider {
  public:
-  explicit TriangleCollider(const render::MeshData& mesh);
+  explicit TriangleCollider(const scene::MeshData& mesh);
 
   const Aabb& bounds() const { return nodes_.empty() ? empty_ : nodes_[0].box; }
   size_t triangleCount() const { return corners_.size() / 3; }

@@ -257,7 +257,7 @@ class MeshAssembler {
   int firstMaterial() const { return firstMaterial_.value_or(-1); }
   std::size_t droppedTriangles() const { return dropped_; }
 
-  render::MeshData finish(std::string name) {
+  scene::MeshData finish(std::string name) {
     if (result_.indices.empty()) {
       if (dropped_ > 0) {
         fail(file_, "all " + std::to_string(dropped_) + " triangles are degenerate (zero area)");
@@ -319,7 +319,7 @@ class MeshAssembler {
     }
 
     const glm::dmat3 normalTransform = glm::transpose(glm::inverse(glm::dmat3(transform)));
-    std::vector<render::Vertex> vertices(positions.size());
+    std::vector<scene::Vertex> vertices(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
       vertices[i].position = glm::vec3(transform * glm::dvec4(glm::dvec3(positions[i]), 1.0));
       if (!normals.empty()) {
@@ -361,7 +361,7 @@ class MeshAssembler {
 
   // Summing unnormalised face normals weights each face by its area; a mesh without shared
   // vertices ends up flat shaded.
-  static void computeAreaWeightedNormals(std::vector<render::Vertex>& vertices,
+  static void computeAreaWeightedNormals(std::vector<scene::Vertex>& vertices,
                                          const std::vector<uint32_t>& indices) {
     std::vector<glm::vec3> sums(vertices.size(), glm::vec3(0.0f));
     for (std::size_t i = 0; i < indices.size(); i += 3) {
@@ -516,7 +516,7 @@ class MeshAssembler {
 
   const tinygltf::Model& model_;
   const fs::path& file_;
-  render::MeshData result_;
+  scene::MeshData result_;
   std::optional<int> firstMaterial_;
   std::size_t dropped_ = 0;
 };
@@ -628,7 +628,7 @@ class MaterialMapper {
     return result;
   }
 
-  render::TextureDesc texture(int textureIndex, int texCoord, const std::string& role, bool srgb) {
+  scene::TextureDesc texture(int textureIndex, int texCoord, const std::string& role, bool srgb) {
     const std::string where = label_ + " " + role;
     if (!validIndex(textureIndex, model_.textures)) {
       fail(file_,
@@ -783,7 +783,7 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
   return result;
 }
 
-render::MeshData loadGltfMesh(const fs::path& file, const fs::path& allowedRoot,
+scene::MeshData loadGltfMesh(const fs::path& file, const fs::path& allowedRoot,
                               const std::string& meshName) {
   GltfSelection selection;
   selection.mesh = meshName;

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace game {
 
@@ -17,8 +17,8 @@ struct GltfMaterial {
   float specular = 0.04f;     // 0.04 + 0.96 * metallic
   float roughness = 1.0f;
   glm::vec3 emissive{0.0f};                          // linear
-  std::optional<render::TextureDesc> colorTexture;   // srgb = true
-  std::optional<render::TextureDesc> normalTexture;  // srgb = false
+  std::optional<scene::TextureDesc> colorTexture;   // srgb = true
+  std::optional<scene::TextureDesc> normalTexture;  // srgb = false
 };
 
 // Which part of the model to load; at most one of the two may be set. Neither: every node of
@@ -30,7 +30,7 @@ struct GltfSelection {
 };
 
 struct GltfModel {
-  render::MeshData mesh;  // positions, normals, UVs; degenerate triangles dropped
+  scene::MeshData mesh;  // positions, normals, UVs; degenerate triangles dropped
   std::optional<GltfMaterial> material;
   std::vector<std::filesystem::path> filesRead;  // the model and every buffer/image it named
   std::vector<std::string> warnings;             // "<file>: dropped N degenerate triangles"
@@ -45,7 +45,7 @@ GltfModel loadGltfModel(const std::filesystem::path& file, const std::filesystem
                         const GltfSelection& selection = {});
 
 // Transitional: the mesh alone (meshName selects a mesh, as GltfSelection::mesh).
-render::MeshData loadGltfMesh(const std::filesystem::path& file,
+scene::MeshData loadGltfMesh(const std::filesystem::path& file,
                               const std::filesystem::path& allowedRoot,
                               const std::string& meshName = {});
 

@@ -13,8 +13,8 @@ glm::mat4 entityTransform(const Entity& entity) {
   return glm::scale(transform, entity.scale);
 }
 
-render::SceneDesc buildSceneDesc(const Level& level) {
-  render::SceneDesc scene;
+scene::SceneDesc buildSceneDesc(const Level& level) {
+  scene::SceneDesc scene;
   scene.meshes = level.meshes;
   scene.materials = level.materials;
   scene.textures = level.textures;

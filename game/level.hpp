@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace game {
 
@@ -81,17 +81,17 @@ struct Level {
   std::string description;
   std::string author;
   std::string hint;
-  render::CameraDesc camera;
-  render::EnvironmentDesc environment;  // sky colours already times sky_intensity
+  scene::CameraDesc camera;
+  scene::EnvironmentDesc environment;  // sky colours already times sky_intensity
   uint32_t maxMirrorBounces = 4;
   std::vector<std::string> materialIds;  // parallel to materials
-  std::vector<render::MaterialDesc> materials;
-  std::vector<render::TextureDesc> textures;  // referenced by materials
+  std::vector<scene::MaterialDesc> materials;
+  std::vector<scene::TextureDesc> textures;  // referenced by materials
   std::vector<std::string> meshIds;           // parallel to meshes
-  std::vector<render::MeshData> meshes;
+  std::vector<scene::MeshData> meshes;
   std::vector<Entity> entities;
   std::vector<std::string> lightIds;  // parallel to lights
-  std::vector<render::LightDesc> lights;
+  std::vector<scene::LightDesc> lights;
   std::optional<Goal> goal;
   std::vector<LoseCondition> lose;
   // Every file the level was built from (the JSON, models, buffers, textures), for reload.
@@ -102,7 +102,7 @@ struct Level {
 glm::mat4 entityTransform(const Entity& entity);
 
 // What the renderer needs to draw the level (entities at their start positions).
-render::SceneDesc buildSceneDesc(const Level& level);
+scene::SceneDesc buildSceneDesc(const Level& level);
 
 // The renderer features a level uses, for `sightline info` and pipeline variants.
 struct LevelFeatures {

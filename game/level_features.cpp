@@ -11,17 +11,17 @@ LevelFeatures levelFeatures(const Level& level) {
   features.textures = !level.textures.empty();
   for (const Entity& entity : level.entities) {
     features.triangles += level.meshes[entity.mesh].indices.size() / 3;
-    const render::MaterialKind kind = level.materials[entity.material].kind;
-    features.glass = features.glass || kind == render::MaterialKind::Glass;
-    features.mirrors = features.mirrors || kind == render::MaterialKind::Mirror;
+    const scene::MaterialKind kind = level.materials[entity.material].kind;
+    features.glass = features.glass || kind == scene::MaterialKind::Glass;
+    features.mirrors = features.mirrors || kind == scene::MaterialKind::Mirror;
     features.movers = features.movers || entity.mover.has_value();
     features.interactables = features.interactables || entity.interactable.has_value();
   }
   features.mirrorBounces = features.mirrors ? std::min(level.maxMirrorBounces, 31u) : 0;
-  for (const render::LightDesc& light : level.lights) {
-    const bool hasExtent = light.type == render::LightType::Directional
+  for (const scene::LightDesc& light : level.lights) {
+    const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f
-                               : light.type != render::LightType::Point;
+                               : light.type != scene::LightType::Point;
     features.areaLights = features.areaLights || hasExtent;
   }
   return features;

@@ -16,7 +16,7 @@ glm::vec3 horizontal(const glm::vec3& v) {
 
 }  // namespace
 
-PlayerController::PlayerController(const render::CameraDesc& spawn, const PlayerSettings& settings)
+PlayerController::PlayerController(const scene::CameraDesc& spawn, const PlayerSettings& settings)
     : settings_(settings),
       capsule_{settings.radius, settings.height},
       walkableNormalY_(std::cos(glm::radians(settings.maxSlopeDegrees)) - 1e-4f),

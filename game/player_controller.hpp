@@ -7,7 +7,7 @@
 
 #include "game/collision.hpp"
 #include "game/replay.hpp"
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace game {
 
@@ -31,7 +31,7 @@ class PlayerController {
   static constexpr float TICK_SECONDS = 1.0f / 60.0f;
 
   // `spawn.position` is the eye; the feet are eyeHeight below it.
-  explicit PlayerController(const render::CameraDesc& spawn, const PlayerSettings& settings = {});
+  explicit PlayerController(const scene::CameraDesc& spawn, const PlayerSettings& settings = {});
 
   // One tick: look, ride the platform stood on, walk (with steps), then fall or stick to the
   // ground. `world` already holds this tick's transforms.

@@ -7,18 +7,18 @@ namespace game::primitives {
 
 namespace {
 
-uint32_t nextIndex(const render::MeshData& mesh) {
+uint32_t nextIndex(const scene::MeshData& mesh) {
   return static_cast<uint32_t>(mesh.vertices.size());
 }
 
-void addTriangle(render::MeshData& mesh, uint32_t a, uint32_t b, uint32_t c) {
+void addTriangle(scene::MeshData& mesh, uint32_t a, uint32_t b, uint32_t c) {
   mesh.indices.insert(mesh.indices.end(), {a, b, c});
 }
 
 // One flat quad; `right` x `up` must equal `normal` so the corners run counter-clockwise.
 // The whole texture covers it, upright and unmirrored when seen from the front: image rows run
 // top to bottom, so v grows against `up`.
-void addQuad(render::MeshData& mesh, const glm::vec3& center, const glm::vec3& right,
+void addQuad(scene::MeshData& mesh, const glm::vec3& center, const glm::vec3& right,
              const glm::vec3& up, const glm::vec3& normal) {
   const uint32_t first = nextIndex(mesh);
   mesh.vertices.push_back({center - right - up, normal, {0.0f, 1.0f}});
@@ -37,8 +37,8 @@ glm::vec3 aroundY(float angle) {
 
 }  // namespace
 
-render::MeshData box(const glm::vec3& size) {
-  render::MeshData mesh;
+scene::MeshData box(const glm::vec3& size) {
+  scene::MeshData mesh;
   mesh.name = "box";
   const glm::vec3 half = size * 0.5f;
   const glm::vec3 x{half.x, 0, 0}, y{0, half.y, 0}, z{0, 0, half.z};
@@ -51,8 +51,8 @@ render::MeshData box(const glm::vec3& size) {
   return mesh;
 }
 
-render::MeshData sphere(float radius, uint32_t segments, uint32_t rings) {
-  render::MeshData mesh;
+scene::MeshData sphere(float radius, uint32_t segments, uint32_t rings) {
+  scene::MeshData mesh;
   mesh.name = "sphere";
   const float pi = std::numbers::pi_v<float>;
   // Rows run from the north pole (ring 0) to the south pole; the seam column is duplicated so
@@ -81,15 +81,15 @@ render::MeshData sphere(float radius, uint32_t segments, uint32_t rings) {
   return mesh;
 }
 
-render::MeshData plane(float width, float depth) {
-  render::MeshData mesh;
+scene::MeshData plane(float width, float depth) {
+  scene::MeshData mesh;
   mesh.name = "plane";
   addQuad(mesh, glm::vec3(0.0f), {width * 0.5f, 0, 0}, {0, 0, -depth * 0.5f}, {0, 1, 0});
   return mesh;
 }
 
-render::MeshData cylinder(float radius, float height, uint32_t segments) {
-  render::MeshData mesh;
+scene::MeshData cylinder(float radius, float height, uint32_t segments) {
+  scene::MeshData mesh;
   mesh.name = "cylinder";
   const float pi = std::numbers::pi_v<float>;
   const float halfHeight = height * 0.5f;

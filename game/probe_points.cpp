@@ -9,8 +9,8 @@ namespace {
 constexpr float kLift = 0.001f;  // off the surface, so a point does not shadow itself
 
 // Unit direction from `point` towards the light (the light's centre, or against a sun).
-glm::vec3 towardsLight(const render::LightDesc& light, const glm::vec3& point) {
-  if (light.type == render::LightType::Directional) {
+glm::vec3 towardsLight(const scene::LightDesc& light, const glm::vec3& point) {
+  if (light.type == scene::LightType::Directional) {
     const float length = glm::length(light.direction);
     return length > 0.0f ? -light.direction / length : glm::vec3(0.0f, 1.0f, 0.0f);
   }
@@ -21,7 +21,7 @@ glm::vec3 towardsLight(const render::LightDesc& light, const glm::vec3& point) {
 
 }  // namespace
 
-std::vector<SurfaceSample> surfaceSamples(const render::MeshData& mesh, uint32_t count) {
+std::vector<SurfaceSample> surfaceSamples(const scene::MeshData& mesh, uint32_t count) {
   std::vector<double> cumulativeArea;
   double total = 0.0;
   for (size_t i = 0; i + 2 < mesh.indices.size(); i += 3) {
@@ -51,11 +51,11 @@ std::vector<SurfaceSample> surfaceSamples(const render::MeshData& mesh, uint32_t
   return samples;
 }
 
-std::vector<render::ExposurePoint> sensorExposurePoints(const std::vector<SurfaceSample>& samples,
+std::vector<scene::ExposurePoint> sensorExposurePoints(const std::vector<SurfaceSample>& samples,
                                                         const glm::mat4& objectToWorld,
-                                                        const render::LightDesc& light) {
+                                                        const scene::LightDesc& light) {
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(objectToWorld)));
-  std::vector<render::ExposurePoint> points;
+  std::vector<scene::ExposurePoint> points;
   for (const SurfaceSample& sample : samples) {
     const glm::vec3 position = glm::vec3(objectToWorld * glm::vec4(sample.position, 1.0f));
     const glm::vec3 normal = glm::normalize(normalMatrix * sample.normal);
@@ -65,14 +65,14 @@ std::vector<render::ExposurePoint> sensorExposurePoints(const std::vector<Surfac
   return points;
 }
 
-std::vector<render::ExposurePoint> playerExposurePoints(const glm::vec3& feet,
-                                                        const render::LightDesc& light) {
+std::vector<scene::ExposurePoint> playerExposurePoints(const glm::vec3& feet,
+                                                        const scene::LightDesc& light) {
   const glm::vec3 centre = feet + glm::vec3(0.0f, 0.9f, 0.0f);
   glm::vec3 toLight = towardsLight(light, centre);
   // Across the line to the light: horizontal, unless the light is straight above or below.
   glm::vec3 across = glm::cross(toLight, glm::vec3(0.0f, 1.0f, 0.0f));
   across = glm::length(across) > 1e-4f ? glm::normalize(across) : glm::vec3(1.0f, 0.0f, 0.0f);
-  std::vector<render::ExposurePoint> points;
+  std::vector<scene::ExposurePoint> points;
   for (int height = 0; height < 16; ++height) {
     for (int place = 0; place < 4; ++place) {
       const float y = 0.05f + 1.7f * (float(height) + 0.5f) / 16.0f;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "game/user_json_file.hpp"
 #include "game/user_paths.hpp"
 
 namespace game {

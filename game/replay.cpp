@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "game/json_error_sax.hpp"
+#include "game/json_document.hpp"
 #include "game/json_positions.hpp"
 
 namespace game {
@@ -32,12 +32,8 @@ class ReplayParser {
     Json root;
     try {
       root = Json::parse(text_);
-    } catch (const Json::parse_error& error) {
-      const SourcePosition at = positionOfParseError(text_, error.byte);
-      throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                        std::to_string(at.column) + ": invalid JSON");
-    } catch (const Json::out_of_range&) {
-      failNumberTooLarge();
+    } catch (const Json::exception&) {
+      failInvalidJson();
     }
     positions_ = JsonPositions::scan(text_);
     if (!root.is_object()) fail("", "expected an object");
@@ -82,33 +78,22 @@ class ReplayParser {
 
  private:
   // Json::parse reports a number too large for a double (1e400) as out_of_range, without a
-  // position; a SAX pass finds the number.
-  [[noreturn]] void failNumberTooLarge() const {
-    struct FirstError : JsonErrorOnlySax<Json> {
-      std::size_t end = 0;
-      std::string token;
-      bool parse_error(std::size_t position, const std::string& last,
-                       const nlohmann::detail::exception&) override {
-        end = position;
-        token = last;
-        return false;
-      }
-    } error;
-    Json::sax_parse(text_, &error);
-    const SourcePosition at = positionOfOffset(
-        text_, error.end >= error.token.size() ? error.end - error.token.size() : 0);
-    throw ReplayError(file_.string() + ":" + std::to_string(at.line) + ":" +
-                      std::to_string(at.column) + ": invalid JSON: the number " + error.token +
-                      " is too large to represent");
+  // position; a SAX pass finds it, and where a syntax error is.
+  [[noreturn]] void failInvalidJson() const {
+    const JsonSyntaxError error = firstJsonSyntaxError(text_);
+    if (error.numberTooLarge) {
+      throw ReplayError(placeInFile(file_, positionOfOffset(text_, error.tokenOffset)) +
+                        "invalid JSON: the number " + error.lastToken +
+                        " is too large to represent");
+    }
+    const SourcePosition at = positionOfParseError(text_, error.bytesRead);
+    throw ReplayError(placeInFile(file_, at) + "invalid JSON");
   }
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
-    const SourcePosition at = positions_.valueAt(pointer);
-    const std::string path = positions_.dottedPath(pointer);
     // One line whatever the file holds: keys and values are quoted in messages.
-    throw ReplayError(escapeControlCharacters(file_.string() + ":" + std::to_string(at.line) + ":" +
-                                              std::to_string(at.column) + ": " +
-                                              (path.empty() ? "" : path + ": ") + message));
+    throw ReplayError(escapeControlCharacters(
+        placeInFile(file_, positions_.valueAt(pointer), positions_.dottedPath(pointer)) + message));
   }
 
   void require(const Json& object, const std::string& pointer, const std::string& key) const {
@@ -122,11 +107,9 @@ class ReplayParser {
       std::string list;
       for (const std::string& key : allowed) list += (list.empty() ? "\"" : ", \"") + key + "\"";
       const std::string member = pointer + "/" + escapeJsonPointerToken(item.key());
-      const SourcePosition at = positions_.keyAt(member);
       throw ReplayError(escapeControlCharacters(
-          file_.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
-          (pointer.empty() ? "" : positions_.dottedPath(pointer) + ": ") + "unknown key \"" +
-          item.key() + "\"; allowed keys: " + list));
+          placeInFile(file_, positions_.keyAt(member), positions_.dottedPath(pointer)) +
+          "unknown key \"" + item.key() + "\"; allowed keys: " + list));
     }
   }
 
@@ -375,9 +358,7 @@ Replay parseReplay(const std::string& text, const fs::path& file) {
 Replay loadReplay(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw ReplayError(file.string() + ": cannot open the replay file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseReplay(text.str(), file);
+  return parseReplay(readAtMostPastLimit(in, kMaxReplayBytes), file);
 }
 
 std::string replayToJson(const Replay& replay) {

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <string_view>
 
+#include "game/user_json_file.hpp"
 #include "game/user_paths.hpp"
 
 namespace game {

@@ -44,7 +44,7 @@ struct StbFree {
 
 }  // namespace
 
-render::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
+scene::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
                                   bool srgb) {
   if (bytes.empty()) fail(name, "image file is empty");
   if (bytes.size() > kMaxTextureFileBytes) {
@@ -83,7 +83,7 @@ render::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::str
     fail(name, "image decoded to a different size than its header states");
   }
 
-  render::TextureDesc texture;
+  scene::TextureDesc texture;
   texture.name = name;
   texture.width = static_cast<uint32_t>(width);
   texture.height = static_cast<uint32_t>(height);
@@ -93,7 +93,7 @@ render::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::str
   return texture;
 }
 
-render::TextureDesc loadTextureFile(const fs::path& file, bool srgb) {
+scene::TextureDesc loadTextureFile(const fs::path& file, bool srgb) {
   const std::string name = file.string();
   std::error_code error;
   if (!fs::is_regular_file(file, error)) fail(name, "cannot open texture file");

@@ -5,7 +5,7 @@
 #include <span>
 #include <string>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace game {
 
@@ -13,10 +13,10 @@ constexpr uint32_t kMaxTextureDimension = 4096;
 
 // Decodes an image file (PNG or JPEG) into RGBA8. Throws game::LevelError naming the file when
 // it cannot be read or decoded, or is larger than kMaxTextureDimension on a side.
-render::TextureDesc loadTextureFile(const std::filesystem::path& file, bool srgb);
+scene::TextureDesc loadTextureFile(const std::filesystem::path& file, bool srgb);
 
 // Same, from bytes already in memory (e.g. an image embedded in a .glb); `name` names it.
-render::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
+scene::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
                                   bool srgb);
 
 }  // namespace game

@@ -1,5 +1,4 @@
 #include "game/user_paths.hpp"
-#include "game/json_error_sax.hpp"
 
 #include <fcntl.h>
 #include <pwd.h>
@@ -11,6 +10,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+
+#include "game/json_document.hpp"
 
 namespace game {
 
@@ -143,126 +144,12 @@ std::optional<std::string> readUserFile(const fs::path& file, std::size_t maxByt
   std::ifstream stream(file, std::ios::binary);
   if (!stream.is_open()) throw UserFileError(file.string() + ": cannot read: cannot open");
   // Read in chunks and stop past the limit, so a huge file is never held in memory whole.
-  std::string text;
-  char chunk[1 << 14];
-  while (text.size() <= maxBytes && (stream.read(chunk, sizeof chunk) || stream.gcount() > 0))
-    text.append(chunk, static_cast<std::size_t>(stream.gcount()));
+  std::string text = readAtMostPastLimit(stream, maxBytes);
   if (stream.bad()) throw UserFileError(file.string() + ": cannot read: I/O error");
   if (text.size() > maxBytes)
     throw UserFileError(file.string() + ": larger than the " + std::to_string(maxBytes) +
                         "-byte limit");
   return text;
-}
-
-namespace {
-
-constexpr std::size_t kMaxUserFileBytes = 1u << 20;
-
-std::string locate(const fs::path& file, SourcePosition at) {
-  return file.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": ";
-}
-
-// Collects the first error of a SAX parse: syntax errors and numbers too large for a double
-// alike, each with the byte where it was found (json::parse gives no position for the latter).
-struct FirstJsonError : JsonErrorOnlySax<nlohmann::ordered_json> {
-  std::size_t bytesRead = 0;
-  std::string reason;
-
-  bool parse_error(std::size_t position, const std::string&,
-                   const nlohmann::detail::exception& error) override {
-    bytesRead = position;
-    // what() reads "[json.exception.parse_error.101] parse error at line 1, column 7: <reason>".
-    reason = error.what();
-    if (const std::size_t prefixEnd = reason.find("] "); prefixEnd != std::string::npos)
-      reason.erase(0, prefixEnd + 2);
-    if (reason.rfind("parse error", 0) == 0) {
-      if (const std::size_t colon = reason.find(": "); colon != std::string::npos)
-        reason.erase(0, colon + 2);
-    }
-    return false;
-  }
-};
-
-}  // namespace
-
-std::string describeJson(const nlohmann::ordered_json& value) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string text = value.dump(-1, ' ', false, nlohmann::ordered_json::error_handler_t::replace);
-  if (text.size() > kMaxShown) text = text.substr(0, kMaxShown - 3) + "...";
-  return text;
-}
-
-std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::string& versionKey,
-                                               int version, const std::string& whenIgnored,
-                                               std::vector<std::string>& messages) {
-  std::optional<std::string> text;
-  try {
-    text = readUserFile(file, kMaxUserFileBytes);
-  } catch (const UserFileError& error) {
-    messages.push_back(error.what() + ("; " + whenIgnored));
-    return std::nullopt;
-  }
-  if (!text) return std::nullopt;
-
-  nlohmann::ordered_json root;
-  try {
-    root = nlohmann::ordered_json::parse(*text);
-  } catch (const nlohmann::ordered_json::exception&) {
-    FirstJsonError error;
-    nlohmann::ordered_json::sax_parse(*text, &error);
-    messages.push_back(locate(file, positionOfParseError(*text, error.bytesRead)) +
-                       "invalid JSON: " + error.reason + "; " + whenIgnored);
-    return std::nullopt;
-  }
-  if (!root.is_object()) {
-    messages.push_back(locate(file, {}) + "expected an object, got " + describeJson(root) + "; " +
-                       whenIgnored);
-    return std::nullopt;
-  }
-  UserJsonFile opened(file, std::move(root), JsonPositions::scan(*text), messages);
-  if (const auto& duplicate = opened.positions_.firstDuplicateKey()) {
-    opened.reportAt(duplicate->position, duplicate->pointer, "duplicate key; the last one is used");
-  }
-
-  const std::string versionPointer = "/" + escapeJsonPointerToken(versionKey);
-  const auto versionValue = opened.root_.find(versionKey);
-  if (versionValue == opened.root_.end()) {
-    // Older hand-written files may lack it; the fields still mean what version 1 says.
-    opened.reportValue("", "missing \"" + versionKey + "\": " + std::to_string(version) +
-                               "; reading the file as version " + std::to_string(version));
-  } else if (!versionValue->is_number_integer() || versionValue->get<int64_t>() != version) {
-    // A newer game wrote it (or it is damaged): its fields may mean something else.
-    const SourcePosition at = opened.positions_.valueAt(versionPointer);
-    messages.push_back(locate(file, at) + versionKey + ": expected version " +
-                       std::to_string(version) + ", got " + describeJson(*versionValue) + "; " +
-                       whenIgnored);
-    return std::nullopt;
-  }
-  return opened;
-}
-
-void UserJsonFile::reportAt(SourcePosition at, const std::string& pointer,
-                            const std::string& problem) {
-  const std::string field = positions_.dottedPath(pointer);
-  messages_->push_back(locate(file_, at) + (field.empty() ? "" : field + ": ") + problem);
-}
-
-void UserJsonFile::reportValue(const std::string& pointer, const std::string& problem) {
-  reportAt(positions_.valueAt(pointer), pointer, problem);
-}
-
-void UserJsonFile::reportKey(const std::string& pointer, const std::string& problem) {
-  reportAt(positions_.keyAt(pointer), pointer, problem);
-}
-
-void UserJsonFile::reportUnknownKeys(const std::string& pointer,
-                                     const std::vector<std::string>& known,
-                                     const std::string& what) {
-  const nlohmann::ordered_json& object = root_.at(nlohmann::ordered_json::json_pointer(pointer));
-  for (const auto& [key, value] : object.items()) {
-    if (std::find(known.begin(), known.end(), key) == known.end())
-      reportKey(pointer + "/" + escapeJsonPointerToken(key), what + "; ignored");
-  }
 }
 
 }  // namespace game

@@ -15,7 +15,7 @@ World::World(const Level& level, const PlayerSettings& player)
       collision_(level),
       player_(level.camera, player),
       values_(level.entities.size(), 0.0f) {
-  for (const render::LightDesc& light : lights_) lightsEnabled_.push_back(light.enabled ? 1 : 0);
+  for (const scene::LightDesc& light : lights_) lightsEnabled_.push_back(light.enabled ? 1 : 0);
   for (uint32_t e = 0; e < entities_.size(); ++e) {
     const Entity& entity = entities_[e];
     if (entity.interactable) {
@@ -103,13 +103,13 @@ void World::step(const PlayerInput& input) {
   std::sort(changed_.begin(), changed_.end());
 }
 
-std::vector<render::LightDesc> World::lights() const {
-  std::vector<render::LightDesc> lights = lights_;
+std::vector<scene::LightDesc> World::lights() const {
+  std::vector<scene::LightDesc> lights = lights_;
   for (size_t i = 0; i < lights.size(); ++i) lights[i].enabled = lightsEnabled_[i] != 0;
   return lights;
 }
 
-render::CameraDesc World::camera() const {
+scene::CameraDesc World::camera() const {
   return {player_.eye(), player_.yawDegrees(), player_.pitchDegrees(), verticalFovDegrees_};
 }
 

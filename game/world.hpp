@@ -10,7 +10,7 @@
 #include "game/collision.hpp"
 #include "game/level.hpp"
 #include "game/player_controller.hpp"
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace game {
 
@@ -42,7 +42,7 @@ class World {
   size_t lightCount() const { return lightsEnabled_.size(); }
   bool lightEnabled(uint32_t light) const { return lightsEnabled_[light] != 0; }
   // The level's lights with their current enabled states.
-  std::vector<render::LightDesc> lights() const;
+  std::vector<scene::LightDesc> lights() const;
 
   const PlayerController& player() const { return player_; }
   glm::vec3 eyePosition() const { return player_.eye(); }
@@ -50,7 +50,7 @@ class World {
   float yawDegrees() const { return player_.yawDegrees(); }
   float pitchDegrees() const { return player_.pitchDegrees(); }
   bool grounded() const { return player_.grounded(); }
-  render::CameraDesc camera() const;  // the eye, with the level's field of view
+  scene::CameraDesc camera() const;  // the eye, with the level's field of view
   // The player's own field of view instead of the level's (a play setting; replays keep it).
   void setVerticalFovDegrees(float degrees) { verticalFovDegrees_ = degrees; }
 
@@ -67,7 +67,7 @@ class World {
   std::optional<uint32_t> pick() const;
 
   std::vector<Entity> entities_;
-  std::vector<render::LightDesc> lights_;
+  std::vector<scene::LightDesc> lights_;
   float verticalFovDegrees_ = 60.0f;
   CollisionWorld collision_;
   PlayerController player_;

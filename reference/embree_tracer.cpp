@@ -22,8 +22,8 @@
 namespace reference {
 namespace {
 
-using render::LightType;
-using render::MaterialKind;
+using scene::LightType;
+using scene::MaterialKind;
 
 constexpr float kFar = 1.0e30f;  // FAR in raygen.rgen
 
@@ -58,7 +58,7 @@ struct Light {
 };
 
 struct Instance {
-  const render::MeshData* mesh = nullptr;
+  const scene::MeshData* mesh = nullptr;
   MaterialKind kind = MaterialKind::Diffuse;
   glm::mat3 normalToWorld{1.0f};  // inverse transpose of the object-to-world rotation part
 };
@@ -77,7 +77,7 @@ struct EmbreeTracer::Scene {
   RTCDevice device = nullptr;
   std::vector<RTCScene> meshScenes;  // owned: the bottom levels
   RTCScene top = nullptr;
-  std::vector<render::MeshData> meshes;  // a copy: normals are read at every hit
+  std::vector<scene::MeshData> meshes;  // a copy: normals are read at every hit
   std::vector<Instance> instances;
   std::vector<std::pair<uint32_t, glm::mat4>> placed;  // attached instance IDs, object-to-world
   std::vector<Light> lights;
@@ -113,7 +113,7 @@ struct EmbreeTracer::Scene {
                                std::to_string(int(error)) + ")");
   }
 
-  RTCScene buildMeshScene(const render::MeshData& mesh, bool glass) {
+  RTCScene buildMeshScene(const scene::MeshData& mesh, bool glass) {
     RTCScene scene = rtcNewScene(device);
     meshScenes.push_back(scene);
     // Robust: watertight edges, as Vulkan requires of ray-triangle tests.
@@ -139,7 +139,7 @@ struct EmbreeTracer::Scene {
   }
 };
 
-EmbreeTracer::EmbreeTracer(const render::SceneDesc& scene, const render::PipelineFeatures& features,
+EmbreeTracer::EmbreeTracer(const scene::SceneDesc& scene, const render::PipelineFeatures& features,
                            uint32_t threads)
     : scene_(std::make_unique<Scene>()), threads_(std::max(threads, 1u)) {
   Scene& s = *scene_;
@@ -156,11 +156,11 @@ EmbreeTracer::EmbreeTracer(const render::SceneDesc& scene, const render::Pipelin
   s.top = rtcNewScene(s.device);
   rtcSetSceneBuildQuality(s.top, RTC_BUILD_QUALITY_HIGH);
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    const render::InstanceDesc& desc = scene.instances[i];
+    const scene::InstanceDesc& desc = scene.instances[i];
     if (desc.mesh >= scene.meshes.size() || desc.material >= scene.materials.size())
       throw std::runtime_error("Embree: instance " + std::to_string(i) +
                                " names a mesh or material that does not exist");
-    const render::MeshData& mesh = s.meshes[desc.mesh];
+    const scene::MeshData& mesh = s.meshes[desc.mesh];
     const MaterialKind kind = scene.materials[desc.material].kind;
     s.instances.push_back(
         {&mesh, kind, glm::transpose(glm::inverse(glm::mat3(desc.objectToWorld)))});
@@ -183,7 +183,7 @@ EmbreeTracer::EmbreeTracer(const render::SceneDesc& scene, const render::Pipelin
   buildMilliseconds_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
-  for (const render::LightDesc& desc : scene.lights) {
+  for (const scene::LightDesc& desc : scene.lights) {
     Light light;
     light.type = desc.type;
     light.worldPosition = desc.position;
@@ -300,11 +300,11 @@ class PixelTracer {
     // The normals as surface.rchit makes them: from the triangle's corners and vertex normals,
     // to world space by the inverse transpose.
     const Instance& instance = instances_[hit.instance];
-    const render::MeshData& mesh = *instance.mesh;
+    const scene::MeshData& mesh = *instance.mesh;
     const uint32_t first = 3 * rayHit.hit.primID;
-    const render::Vertex& v0 = mesh.vertices[mesh.indices[first]];
-    const render::Vertex& v1 = mesh.vertices[mesh.indices[first + 1]];
-    const render::Vertex& v2 = mesh.vertices[mesh.indices[first + 2]];
+    const scene::Vertex& v0 = mesh.vertices[mesh.indices[first]];
+    const scene::Vertex& v1 = mesh.vertices[mesh.indices[first + 1]];
+    const scene::Vertex& v2 = mesh.vertices[mesh.indices[first + 2]];
     const float u = rayHit.hit.u, v = rayHit.hit.v;
     glm::vec3 geometric =
         instance.normalToWorld * glm::cross(v1.position - v0.position, v2.position - v0.position);
@@ -375,7 +375,7 @@ class PixelTracer {
 
 }  // namespace
 
-ReferenceFrame EmbreeTracer::traceFrame(const render::CameraDesc& camera, uint32_t width,
+ReferenceFrame EmbreeTracer::traceFrame(const scene::CameraDesc& camera, uint32_t width,
                                         uint32_t height) {
   if (width == 0 || height == 0) throw std::invalid_argument("traceFrame: empty image");
   Scene& s = *scene_;
@@ -418,7 +418,7 @@ ReferenceFrame EmbreeTracer::traceFrame(const render::CameraDesc& camera, uint32
 }
 
 uint32_t countFocusPixels(const ReferenceFrame& frame, uint32_t instance,
-                          const render::PixelBox& box) {
+                          const scene::PixelBox& box) {
   uint32_t count = 0;
   for (uint32_t y = box.y0; y < std::min(box.y1, frame.height); ++y)
     for (uint32_t x = box.x0; x < std::min(box.x1, frame.width); ++x)

@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "render/pipeline_variant.hpp"
-#include "render/probes.hpp"
-#include "render/scene_desc.hpp"
+#include "scene/probes.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace reference {
 
@@ -43,7 +43,7 @@ class EmbreeTracer {
   // Builds the BVHs (one per mesh and use, instanced like the renderer's BLAS and TLAS).
   // `features` is the pipeline variant whose rays to shoot (render::featuresOf(scene) for the
   // level's own).
-  EmbreeTracer(const render::SceneDesc& scene, const render::PipelineFeatures& features,
+  EmbreeTracer(const scene::SceneDesc& scene, const render::PipelineFeatures& features,
                uint32_t threads = 2);
   ~EmbreeTracer();
   EmbreeTracer(const EmbreeTracer&) = delete;
@@ -52,7 +52,7 @@ class EmbreeTracer {
   // Traces one frame from `camera` at width x height; rows are dealt to the threads one at a
   // time. Coordinates are camera-relative (world minus camera, like the renderer's render
   // space); a camera that moved re-places the instances first, outside the timed trace.
-  ReferenceFrame traceFrame(const render::CameraDesc& camera, uint32_t width, uint32_t height);
+  ReferenceFrame traceFrame(const scene::CameraDesc& camera, uint32_t width, uint32_t height);
 
   double buildMilliseconds() const { return buildMilliseconds_; }
   uint32_t threads() const { return threads_; }
@@ -66,6 +66,6 @@ class EmbreeTracer {
 
 // Pixels of `box` whose path ended on `instance`, as the ray-gen shader counts a focus probe.
 uint32_t countFocusPixels(const ReferenceFrame& frame, uint32_t instance,
-                          const render::PixelBox& box);
+                          const scene::PixelBox& box);
 
 }  // namespace reference

@@ -4,19 +4,19 @@
 
 namespace render {
 
-PipelineFeatures featuresOf(const SceneDesc& scene) {
+PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
   PipelineFeatures features;
-  for (const InstanceDesc& instance : scene.instances) {
+  for (const scene::InstanceDesc& instance : scene.instances) {
     if (instance.material >= scene.materials.size()) continue;
-    const MaterialKind kind = scene.materials[instance.material].kind;
-    features.glass = features.glass || kind == MaterialKind::Glass;
-    features.mirrors = features.mirrors || kind == MaterialKind::Mirror;
+    const scene::MaterialKind kind = scene.materials[instance.material].kind;
+    features.glass = features.glass || kind == scene::MaterialKind::Glass;
+    features.mirrors = features.mirrors || kind == scene::MaterialKind::Mirror;
   }
   features.maxMirrorBounces = features.mirrors ? std::min(scene.maxMirrorBounces, 31u) : 0;
-  for (const LightDesc& light : scene.lights) {
-    const bool hasExtent = light.type == LightType::Directional
+  for (const scene::LightDesc& light : scene.lights) {
+    const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f
-                               : light.type != LightType::Point;
+                               : light.type != scene::LightType::Point;
     features.softShadows = features.softShadows || hasExtent;
   }
   return features;

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 #include "render/shader_compiler.hpp"
 
 namespace render {
@@ -20,7 +20,7 @@ struct PipelineFeatures {
   bool operator==(const PipelineFeatures&) const = default;
 };
 
-PipelineFeatures featuresOf(const SceneDesc& scene);
+PipelineFeatures featuresOf(const scene::SceneDesc& scene);
 // Everything on, for measuring what a level's own variant saves.
 PipelineFeatures allFeatures(uint32_t maxMirrorBounces);
 

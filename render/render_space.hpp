@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace render {
 
@@ -18,7 +18,7 @@ struct CameraBasis {
   glm::vec3 forward, right, up;
 };
 
-inline CameraBasis cameraBasis(const CameraDesc& camera, float aspect) {
+inline CameraBasis cameraBasis(const scene::CameraDesc& camera, float aspect) {
   const float yaw = glm::radians(camera.yawDegrees);
   const float pitch = glm::radians(camera.pitchDegrees);
   const glm::vec3 forward(-std::sin(yaw) * std::cos(pitch), std::sin(pitch),

@@ -20,7 +20,8 @@
 namespace render {
 namespace {
 
-static_assert(sizeof(Vertex) == VERTEX_FLOATS * sizeof(float), "vertex layout matches shaders");
+static_assert(sizeof(scene::Vertex) == VERTEX_FLOATS * sizeof(float),
+              "vertex layout matches shaders");
 
 constexpr VkShaderStageFlags kRayStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
@@ -44,7 +45,7 @@ Buffer makeStorage(const Context& context, const std::vector<T>& items, VkBuffer
   return buffer;
 }
 
-gpu::GpuLight toGpuLight(const LightDesc& light) {
+gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
   const glm::vec3 direction = glm::length(light.direction) > 0.0f ? glm::normalize(light.direction)
                                                                   : glm::vec3(0.0f, -1.0f, 0.0f);
   return {glm::vec4(light.position, static_cast<float>(light.type)),
@@ -55,7 +56,7 @@ gpu::GpuLight toGpuLight(const LightDesc& light) {
 
 }  // namespace
 
-Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
+Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene::SceneDesc& scene,
                    const RendererOptions& options)
     : context_(context), options_(options), environment_(scene.environment) {
   // Interleaving pays on CPU drivers (each thread's block of rows sees every part of the image);
@@ -74,13 +75,13 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
     throw RenderError("image size must be between 1x1 and 16384x16384");
   }
   // One vertex and index buffer for all meshes; each instance records where its mesh starts.
-  std::vector<Vertex> allVertices;
+  std::vector<scene::Vertex> allVertices;
   std::vector<uint32_t> allIndices;
   struct MeshRange {
     uint32_t firstIndex, vertexOffset, indexCount, vertexCount;
   };
   std::vector<MeshRange> ranges;
-  for (const MeshData& mesh : scene.meshes) {
+  for (const scene::MeshData& mesh : scene.meshes) {
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0 || mesh.vertices.empty())
       throw RenderError("mesh '" + mesh.name + "' has no triangles");
     for (uint32_t index : mesh.indices) {
@@ -95,7 +96,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   }
   triangleCount_ = 0;
   std::vector<gpu::GpuInstance> gpuInstances;
-  for (const InstanceDesc& instance : scene.instances) {
+  for (const scene::InstanceDesc& instance : scene.instances) {
     if (instance.mesh >= ranges.size() || instance.material >= scene.materials.size())
       throw RenderError("an instance refers to a mesh or material that does not exist");
     const MeshRange& range = ranges[instance.mesh];
@@ -110,7 +111,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
     return static_cast<uint32_t>(index + 1);
   };
   std::vector<gpu::GpuMaterial> gpuMaterials;
-  for (const MaterialDesc& material : scene.materials) {
+  for (const scene::MaterialDesc& material : scene.materials) {
     gpuMaterials.push_back(
         {glm::vec4(material.baseColor, material.specular),
          glm::vec4(material.emissive, material.roughness), glm::vec4(material.mirrorTint, 0.0f),
@@ -118,7 +119,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
          glm::uvec4(static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
                     textureSlot(material.normalTexture), 0u)});
   }
-  for (const LightDesc& light : scene.lights) {
+  for (const scene::LightDesc& light : scene.lights) {
     gpuLights_.push_back(toGpuLight(light));
     lightPositions_.push_back(light.position);
   }
@@ -132,9 +133,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
   // The texture array is never empty: a white texel stands in when the scene has none.
   if (scene.textures.empty()) {
     textures_.push_back(std::make_unique<Texture>(
-        context, TextureDesc{"white", 1, 1, false, {255, 255, 255, 255}}));
+        context, scene::TextureDesc{"white", 1, 1, false, {255, 255, 255, 255}}));
   }
-  for (const TextureDesc& texture : scene.textures)
+  for (const scene::TextureDesc& texture : scene.textures)
     textures_.push_back(std::make_unique<Texture>(context, texture));
   VkSamplerCreateInfo samplerInfo{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   samplerInfo.magFilter = VK_FILTER_LINEAR;
@@ -171,16 +172,17 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const Scene
 
   std::vector<TriangleGeometry> geometries;
   for (const MeshRange& range : ranges) {
-    geometries.push_back({vertices_.address() + VkDeviceSize(range.vertexOffset) * sizeof(Vertex),
-                          sizeof(Vertex), range.vertexCount,
-                          indices_.address() + VkDeviceSize(range.firstIndex) * sizeof(uint32_t),
-                          range.indexCount / 3});
+    geometries.push_back(
+        {vertices_.address() + VkDeviceSize(range.vertexOffset) * sizeof(scene::Vertex),
+         sizeof(scene::Vertex), range.vertexCount,
+         indices_.address() + VkDeviceSize(range.firstIndex) * sizeof(uint32_t),
+         range.indexCount / 3});
   }
   bottomLevels_ = buildBottomLevels(context, geometries);
   std::vector<TlasInstance> tlasInstances;
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
-    const InstanceDesc& instance = scene.instances[i];
-    const bool glass = scene.materials[instance.material].kind == MaterialKind::Glass;
+    const scene::InstanceDesc& instance = scene.instances[i];
+    const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
     tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow);
     if (glass) {
@@ -433,34 +435,25 @@ std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
   return result;
 }
 
-PixelBox focusPixelBox(glm::vec2 region, uint32_t width, uint32_t height) {
-  auto span = [](float fraction, uint32_t size) {
-    return std::clamp(uint32_t(std::lround(double(fraction) * size)), 1u, size);
-  };
-  const uint32_t boxWidth = span(region.x, width), boxHeight = span(region.y, height);
-  const uint32_t x0 = (width - boxWidth) / 2, y0 = (height - boxHeight) / 2;
-  return {x0, y0, x0 + boxWidth, y0 + boxHeight};
-}
-
-void Renderer::setProbes(const ProbeRequest& request) {
+void Renderer::setProbes(const scene::ProbeRequest& request) {
   if (request.focus.size() > MAX_FOCUS_PROBES || request.exposure.size() > MAX_EXPOSURE_PROBES)
     throw RenderError("setProbes: at most 16 focus and 16 exposure probes");
   if (!request.exposure.empty() && !rayTracingPipeline_->hasProbeRaygen())
     throw RenderError("setProbes: exposure probes need a scene made with exposureProbes");
   gpu::ProbeSetup setup{};
   setup.counts = glm::uvec4(request.focus.size(), request.exposure.size(), 0, 0);
-  ProbeCounts counts;
+  scene::ProbeCounts counts;
   for (size_t i = 0; i < request.focus.size(); ++i) {
-    const FocusProbeDesc& focus = request.focus[i];
+    const scene::FocusProbeDesc& focus = request.focus[i];
     if (focus.instance >= currentTransforms_.size())
       throw RenderError("setProbes: a focus probe names an instance that does not exist");
-    const PixelBox box = focusPixelBox(focus.region, options_.width, options_.height);
+    const scene::PixelBox box = scene::focusPixelBox(focus.region, options_.width, options_.height);
     setup.focus[i] =
         glm::uvec4(focus.instance, box.x0 | (box.y0 << 16), box.x1 | (box.y1 << 16), 0);
     counts.focusRegionPixels.push_back(box.pixels());
   }
   for (size_t i = 0; i < request.exposure.size(); ++i) {
-    const ExposureProbeDesc& exposure = request.exposure[i];
+    const scene::ExposureProbeDesc& exposure = request.exposure[i];
     if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
       throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
     setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(), 0, 0);
@@ -480,9 +473,9 @@ void Renderer::writeProbePoints() {
   const glm::dvec3 origin = renderOrigin_.value_or(glm::dvec3(0.0));
   std::vector<gpu::ProbePoint> points(size_t(MAX_EXPOSURE_PROBES) * EXPOSURE_SAMPLES);
   for (size_t i = 0; i < probeRequest_.exposure.size(); ++i) {
-    const ExposureProbeDesc& exposure = probeRequest_.exposure[i];
+    const scene::ExposureProbeDesc& exposure = probeRequest_.exposure[i];
     for (size_t p = 0; p < exposure.points.size(); ++p) {
-      const ExposurePoint& point = exposure.points[p];
+      const scene::ExposurePoint& point = exposure.points[p];
       points[i * EXPOSURE_SAMPLES + p] = {glm::vec4(toRenderSpace(point.position, origin), 1.0f),
                                           glm::vec4(point.normal, point.oneSided ? 1.0f : 0.0f)};
     }
@@ -513,7 +506,7 @@ void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
-void Renderer::writeFrameUniforms(const FrameDesc& frame) {
+void Renderer::writeFrameUniforms(const scene::FrameDesc& frame) {
   const CameraBasis camera =
       cameraBasis(frame.camera, float(options_.width) / float(options_.height));
 
@@ -645,7 +638,7 @@ VkImage Renderer::outputImage() const {
   return outputImage_->image();
 }
 
-uint32_t Renderer::denoiserIterations(const FrameDesc& frame) const {
+uint32_t Renderer::denoiserIterations(const scene::FrameDesc& frame) const {
   return frame.referenceAccumulation ? 0u : std::min(options_.denoiserIterations, 5u);
 }
 
@@ -670,7 +663,7 @@ void Renderer::writeDenoiserHistoryTexel(uint32_t x, uint32_t y, const glm::vec4
   denoiser_->writeHistoryTexel(parity_, x, y, history, moments);
 }
 
-FrameStats Renderer::renderFrame(const FrameDesc& frame, bool readback) {
+FrameStats Renderer::renderFrame(const scene::FrameDesc& frame, bool readback) {
   lastIterations_ = denoiserIterations(frame);
   moveRenderOrigin(glm::dvec3(frame.camera.position));
   writeInstanceMotion();

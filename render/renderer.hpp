@@ -15,8 +15,8 @@
 #include "render/denoiser.hpp"
 #include "render/gpu_types.hpp"
 #include "render/pipeline_variant.hpp"
-#include "render/probes.hpp"
-#include "render/scene_desc.hpp"
+#include "scene/probes.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace render {
 
@@ -62,23 +62,23 @@ struct FrameStats {
 
 class Renderer {
  public:
-  Renderer(const Context& context, ShaderCompiler& compiler, const SceneDesc& scene,
+  Renderer(const Context& context, ShaderCompiler& compiler, const scene::SceneDesc& scene,
            const RendererOptions& options);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
   // Renders one frame and waits for it. With `readback`, pixels() holds the result.
-  FrameStats renderFrame(const FrameDesc& frame, bool readback = true);
+  FrameStats renderFrame(const scene::FrameDesc& frame, bool readback = true);
 
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
 
   // What the probes measure from the next frame on (replaces the previous request). Exposure
   // probes need a scene made with exposureProbes.
-  void setProbes(const ProbeRequest& request);
+  void setProbes(const scene::ProbeRequest& request);
   // The probes' results of the last frame rendered.
-  const ProbeCounts& probeCounts() const { return probeCounts_; }
+  const scene::ProbeCounts& probeCounts() const { return probeCounts_; }
 
   // Turns a light on or off from the next frame (switches).
   void setLightEnabled(uint32_t light, bool enabled);
@@ -114,17 +114,17 @@ class Renderer {
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);
   void moveRenderOrigin(const glm::dvec3& origin);
-  void writeFrameUniforms(const FrameDesc& frame);
+  void writeFrameUniforms(const scene::FrameDesc& frame);
   void writeInstanceMotion();
   void writeProbePoints();
-  uint32_t denoiserIterations(const FrameDesc& frame) const;
+  uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback);
 
   const Context& context_;
   RendererOptions options_;
   uint32_t lightCount_ = 0;
   size_t triangleCount_ = 0;
-  EnvironmentDesc environment_;
+  scene::EnvironmentDesc environment_;
 
   Buffer vertices_;
   Buffer indices_;
@@ -136,8 +136,8 @@ class Renderer {
   Buffer countersReadback_;
   Buffer paths_;
   Buffer probeSetup_;
-  ProbeRequest probeRequest_;
-  ProbeCounts probeCounts_;
+  scene::ProbeRequest probeRequest_;
+  scene::ProbeCounts probeCounts_;
   PipelineDescription pipelineDescription_;
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;

@@ -4,7 +4,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace render {
 
@@ -13,7 +13,7 @@ class Context;
 class Texture {
  public:
   // sRGB colour textures use *_SRGB (the sampler decodes to linear); data textures *_UNORM.
-  Texture(const Context& context, const TextureDesc& desc);
+  Texture(const Context& context, const scene::TextureDesc& desc);
   ~Texture();
   Texture(const Texture&) = delete;
   Texture& operator=(const Texture&) = delete;

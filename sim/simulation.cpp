@@ -18,8 +18,8 @@ render::RendererOptions rendererOptions(const SimulationOptions& options) {
   return result;
 }
 
-render::SceneDesc sceneFor(const game::Level& level, const game::ProbeLayout& layout) {
-  render::SceneDesc scene = game::buildSceneDesc(level);
+scene::SceneDesc sceneFor(const game::Level& level, const game::ProbeLayout& layout) {
+  scene::SceneDesc scene = game::buildSceneDesc(level);
   scene.exposureProbes = !layout.exposure.empty();
   return scene;
 }
@@ -41,7 +41,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
             ? game::surfaceSamples(level.meshes[level.entities[probe.entity].mesh], kSensorSamples)
             : std::vector<game::SurfaceSample>{});
   }
-  for (const render::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  for (const scene::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
   if (options_.verticalFovDegrees) world_.setVerticalFovDegrees(*options_.verticalFovDegrees);
   transformsChanged_ = !world_.changedEntities().empty();
   // Probe frame 0 shows the world before the first tick.
@@ -74,13 +74,13 @@ void Simulation::syncRenderer() {
 }
 
 game::ProbeReadings Simulation::renderProbeFrame() {
-  render::ProbeRequest request;
+  scene::ProbeRequest request;
   for (const game::FocusProbe& focus : layout_.focus)
     request.focus.push_back({focus.entity, focus.region});
   for (size_t i = 0; i < layout_.exposure.size(); ++i) {
     const game::ExposureProbe& probe = layout_.exposure[i];
-    const render::LightDesc& light = level_.lights[probe.light];
-    render::ExposureProbeDesc desc;
+    const scene::LightDesc& light = level_.lights[probe.light];
+    scene::ExposureProbeDesc desc;
     desc.light = probe.light;
     desc.points = probe.target == game::ExposureProbe::Target::Entity
                       ? game::sensorExposurePoints(sensorSamples_[i],
@@ -89,11 +89,11 @@ game::ProbeReadings Simulation::renderProbeFrame() {
     request.exposure.push_back(std::move(desc));
   }
   renderer_->setProbes(request);
-  render::FrameDesc frame;
+  scene::FrameDesc frame;
   frame.camera = world_.camera();
   frame.frameIndex = frameIndex_++;
   renderer_->renderFrame(frame, false);
-  const render::ProbeCounts& counts = renderer_->probeCounts();
+  const scene::ProbeCounts& counts = renderer_->probeCounts();
   game::ProbeReadings readings;
   readings.tick = world_.tick();
   for (size_t i = 0; i < layout_.focus.size(); ++i)
@@ -134,7 +134,7 @@ void Simulation::step(const game::TickInput& input) {
 
 const std::vector<uint8_t>& Simulation::renderPicture() {
   syncRenderer();
-  render::FrameDesc frame;
+  scene::FrameDesc frame;
   frame.camera = world_.camera();
   // Sample sequences of their own, so taking a picture changes no probe frame's samples.
   frame.frameIndex = kPictureFrames + pictureFrames_++;

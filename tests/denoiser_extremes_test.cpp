@@ -25,9 +25,9 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 // A white floor seen from above, a slab 0.5 m up and a sphere light (radius 0.4 m) above it:
 // lit floor, penumbra and umbra in one view. With `roof`, a 40 m roof at 1.8 m hides the light
 // from all of the floor in view.
-render::SceneDesc slabScene(bool withSlab = true, bool roof = false) {
+scene::SceneDesc slabScene(bool withSlab = true, bool roof = false) {
   SceneBuilder builder;
-  render::MaterialDesc white;
+  scene::MaterialDesc white;
   white.baseColor = glm::vec3(1.0f);
   const uint32_t paint = builder.material(white);
   builder.instance(builder.mesh(game::primitives::plane(20, 20)), paint, glm::mat4(1.0f));
@@ -39,8 +39,8 @@ render::SceneDesc slabScene(bool withSlab = true, bool roof = false) {
     builder.instance(builder.mesh(game::primitives::box({40.0f, 0.1f, 40.0f})), paint,
                      at({0, 1.8f, 0}));
   }
-  render::LightDesc light;
-  light.type = render::LightType::Sphere;
+  scene::LightDesc light;
+  light.type = scene::LightType::Sphere;
   light.position = glm::vec3(0.3f, roof ? 3.0f : 2.0f, 0.0f);
   light.radius = 0.4f;
   light.intensity = 10.0f;
@@ -48,8 +48,8 @@ render::SceneDesc slabScene(bool withSlab = true, bool roof = false) {
   return builder.scene;
 }
 
-render::CameraDesc topCamera(float height = 1.6f) {
-  render::CameraDesc camera;
+scene::CameraDesc topCamera(float height = 1.6f) {
+  scene::CameraDesc camera;
   camera.position = glm::vec3(0, height, 0);
   camera.pitchDegrees = -90.0f;
   camera.verticalFovDegrees = 70.0f;
@@ -57,8 +57,8 @@ render::CameraDesc topCamera(float height = 1.6f) {
 }
 
 // Beside the slab, so an 8x8 image holds lit floor, penumbra and umbra.
-render::CameraDesc sideCamera() {
-  render::CameraDesc camera = topCamera();
+scene::CameraDesc sideCamera() {
+  scene::CameraDesc camera = topCamera();
   camera.position.x = -0.5f;
   camera.verticalFovDegrees = 40.0f;
   return camera;
@@ -71,18 +71,18 @@ bool finite(const glm::vec4& texel) {
 
 class DenoiserExtremesTest : public test::VulkanTest {
  public:  // for the shared long-run check below
-  static std::unique_ptr<render::Renderer> makeRenderer(const render::SceneDesc& scene,
+  static std::unique_ptr<render::Renderer> makeRenderer(const scene::SceneDesc& scene,
                                                         uint32_t size) {
     render::RendererOptions options;
     options.width = size;
     options.height = size;
     return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
   }
-  static render::FrameDesc frameAt(uint32_t index, const render::CameraDesc& camera = topCamera(),
+  static scene::FrameDesc frameAt(uint32_t index, const scene::CameraDesc& camera = topCamera(),
                                    bool reference = false) {
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = camera;
-    frame.tonemap = render::Tonemap::Identity;
+    frame.tonemap = scene::Tonemap::Identity;
     frame.frameIndex = index;
     frame.referenceAccumulation = reference;
     return frame;
@@ -94,7 +94,7 @@ class DenoiserExtremesTest : public test::VulkanTest {
 // iterations: 1 + 2 + 4 = 7 pixels) into the image, and nothing non-finite appears anywhere.
 TEST_F(DenoiserExtremesTest, nan_and_infinity_in_one_history_pixel_stay_within_the_filter_reach) {
   constexpr uint32_t kSize = 48;
-  const render::SceneDesc scene = slabScene();
+  const scene::SceneDesc scene = slabScene();
   auto clean = makeRenderer(scene, kSize);
   auto poisoned = makeRenderer(scene, kSize);
   for (uint32_t frame = 0; frame < 6; ++frame) {
@@ -148,7 +148,7 @@ TEST_F(DenoiserExtremesTest, nan_and_infinity_in_one_history_pixel_stay_within_t
 // bit those of a history started afresh on the same frame (a cut).
 TEST_F(DenoiserExtremesTest, nan_and_infinity_in_the_whole_history_restart_it_like_a_cut) {
   constexpr uint32_t kSize = 32;
-  const render::SceneDesc scene = slabScene();
+  const scene::SceneDesc scene = slabScene();
   for (const glm::vec4 poison : {glm::vec4(kNan), glm::vec4(kInfinity), glm::vec4(-kInfinity)}) {
     auto poisoned = makeRenderer(scene, kSize);
     for (uint32_t frame = 0; frame < 5; ++frame) poisoned->renderFrame(frameAt(frame), false);
@@ -196,7 +196,7 @@ TEST_F(DenoiserExtremesTest, zero_variance_keeps_exact_ones_and_zeros_for_64_fra
 // its long-run mean is the converged visibility.
 void expectStableStaticAccumulation(uint32_t frames) {
   constexpr uint32_t kSize = 8;
-  const render::SceneDesc scene = slabScene();
+  const scene::SceneDesc scene = slabScene();
   auto reference = DenoiserExtremesTest::makeRenderer(scene, kSize);
   for (uint32_t frame = 0; frame < 4096; ++frame)
     reference->renderFrame(DenoiserExtremesTest::frameAt(1u << 24 | frame, sideCamera(), true),
@@ -256,12 +256,12 @@ TEST_F(DenoiserExtremesTest, DISABLED_static_view_stays_stable_for_100000_frames
 // turn keep it.
 TEST_F(DenoiserExtremesTest, teleport_and_sharp_turn_restart_the_history_like_a_fresh_start) {
   constexpr uint32_t kSize = 32;
-  const render::SceneDesc scene = slabScene();
-  render::CameraDesc teleported = topCamera();
+  const scene::SceneDesc scene = slabScene();
+  scene::CameraDesc teleported = topCamera();
   teleported.position += glm::vec3(3.0f, 0.0f, -2.0f);
-  render::CameraDesc turned = topCamera();
+  scene::CameraDesc turned = topCamera();
   turned.pitchDegrees = -40.0f;  // 50 degrees from straight down
-  for (const render::CameraDesc& destination : {teleported, turned}) {
+  for (const scene::CameraDesc& destination : {teleported, turned}) {
     auto renderer = makeRenderer(scene, kSize);
     for (uint32_t frame = 0; frame < 8; ++frame) renderer->renderFrame(frameAt(frame), false);
     auto fresh = makeRenderer(scene, kSize);
@@ -282,7 +282,7 @@ TEST_F(DenoiserExtremesTest, teleport_and_sharp_turn_restart_the_history_like_a_
   // A 20 cm step and a 10-degree turn are no cut: the history grows on.
   auto renderer = makeRenderer(scene, kSize);
   for (uint32_t frame = 0; frame < 8; ++frame) renderer->renderFrame(frameAt(frame), false);
-  render::CameraDesc stepped = topCamera();
+  scene::CameraDesc stepped = topCamera();
   stepped.position.x += 0.2f;
   stepped.pitchDegrees = -80.0f;
   renderer->renderFrame(frameAt(8, stepped), false);

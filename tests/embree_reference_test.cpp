@@ -6,7 +6,7 @@
 #include "game/level_loader.hpp"
 #include "game/probes.hpp"
 #include "reference/embree_tracer.hpp"
-#include "render/probes.hpp"
+#include "scene/probes.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
@@ -45,14 +45,14 @@ class EmbreeReferenceTest : public test::VulkanTest {
     if (layout.focus.empty()) return {};
     const game::FocusProbe& focus = layout.focus.front();
     const glm::vec2 box = region.value_or(focus.region);
-    const render::SceneDesc scene = game::buildSceneDesc(level);
+    const scene::SceneDesc scene = game::buildSceneDesc(level);
 
     render::RendererOptions options;
     options.width = width;
     options.height = height;
     render::Renderer renderer(context(), compiler(), scene, options);
     renderer.setProbes({{{focus.entity, box}}, {}});
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = level.camera;
     const render::FrameStats stats = renderer.renderFrame(frame, false);
     const std::vector<render::gpu::PixelPath> paths = renderer.pixelPaths();
@@ -63,8 +63,8 @@ class EmbreeReferenceTest : public test::VulkanTest {
     Comparison result;
     result.rendererCount = renderer.probeCounts().focusPixels[0];
     result.regionPixels = renderer.probeCounts().focusRegionPixels[0];
-    result.embreeCount = reference::countFocusPixels(traced, focus.entity,
-                                                     render::focusPixelBox(box, width, height));
+    result.embreeCount =
+        reference::countFocusPixels(traced, focus.entity, scene::focusPixelBox(box, width, height));
     for (size_t i = 0; i < paths.size(); ++i)
       result.differingPaths += paths[i].finalInstance != traced.finalInstances[i] ? 1 : 0;
     result.rendererSurfaceRays = stats.surfaceRays;

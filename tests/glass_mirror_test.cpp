@@ -7,15 +7,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "game/primitives.hpp"
-#include "render/color.hpp"
+#include "scene/color.hpp"
 #include "render/pipeline_variant.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
 
-using render::MaterialDesc;
-using render::MaterialKind;
+using scene::MaterialDesc;
+using scene::MaterialKind;
 using test::channel;
 
 using test::at;
@@ -43,7 +43,7 @@ MaterialDesc mirror(const glm::vec3& tint = glm::vec3(1.0f)) {
 }
 
 int expectedByte(double linear) {
-  return int(std::lround(255.0 * render::linearToSrgb(float(std::clamp(linear, 0.0, 1.0)))));
+  return int(std::lround(255.0 * scene::linearToSrgb(float(std::clamp(linear, 0.0, 1.0)))));
 }
 
 class GlassMirrorTest : public test::VulkanTest {
@@ -55,15 +55,15 @@ class GlassMirrorTest : public test::VulkanTest {
   };
 
   // Camera at the origin looking along -Z unless given; identity tonemap.
-  static Frame render(const render::SceneDesc& scene, uint32_t width, uint32_t height,
-                      render::CameraDesc camera = {}) {
+  static Frame render(const scene::SceneDesc& scene, uint32_t width, uint32_t height,
+                      scene::CameraDesc camera = {}) {
     render::RendererOptions options;
     options.width = width;
     options.height = height;
     render::Renderer renderer(context(), compiler(), scene, options);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = camera;
-    frame.tonemap = render::Tonemap::Identity;
+    frame.tonemap = scene::Tonemap::Identity;
     renderer.renderFrame(frame);
     return {
         {width, height, renderer.pixels()}, renderer.pixelPaths(), renderer.pipelineDescription()};
@@ -193,12 +193,12 @@ TEST_F(GlassMirrorTest, glass_shadow_on_white_floor_is_tint_times_unshadowed) {
                    glm::mat4(1.0f));
   builder.instance(builder.mesh(game::primitives::box({0.2f, 0.02f, 0.2f})),
                    builder.material(glass(tint)), at({0, 0.3f, 0}));
-  render::LightDesc sun;
-  sun.type = render::LightType::Directional;
+  scene::LightDesc sun;
+  sun.type = scene::LightType::Directional;
   sun.direction = glm::vec3(1, -1, 0);
   sun.intensity = 2.0f;
   builder.scene.lights.push_back(sun);
-  render::CameraDesc camera;
+  scene::CameraDesc camera;
   camera.position = glm::vec3(0, 1, 0);
   camera.pitchDegrees = -90.0f;
   const Frame frame = render(builder.scene, 33, 33, camera);

@@ -157,7 +157,7 @@ TEST(GltfCrate, geometry_matches_the_box_primitive_with_uvs) {
   EXPECT_EQ(model.mesh.indices.size(), 12u * 3u);
   EXPECT_TRUE(model.warnings.empty());
   // The generator lays out faces, corners and UVs as primitives::box does.
-  const render::MeshData box = game::primitives::box(glm::vec3(1.0f));
+  const scene::MeshData box = game::primitives::box(glm::vec3(1.0f));
   ASSERT_EQ(model.mesh.vertices.size(), box.vertices.size());
   EXPECT_EQ(model.mesh.indices, box.indices);
   for (std::size_t i = 0; i < box.vertices.size(); ++i) {
@@ -186,7 +186,7 @@ TEST(GltfCrate, material_factors_and_textures_are_mapped) {
   EXPECT_EQ(material.emissive, glm::vec3(0.0f));
 
   ASSERT_TRUE(material.colorTexture.has_value());
-  const render::TextureDesc& color = *material.colorTexture;
+  const scene::TextureDesc& color = *material.colorTexture;
   EXPECT_EQ(color.name, (kAssets / "crate_color.png").string());
   EXPECT_TRUE(color.srgb);
   EXPECT_EQ(color.width, 64u);
@@ -196,7 +196,7 @@ TEST(GltfCrate, material_factors_and_textures_are_mapped) {
   EXPECT_EQ(texel(color, 40, 15), (std::array<uint8_t, 4>{60, 40, 22, 255}));
 
   ASSERT_TRUE(material.normalTexture.has_value());
-  const render::TextureDesc& normal = *material.normalTexture;
+  const scene::TextureDesc& normal = *material.normalTexture;
   EXPECT_FALSE(normal.srgb);
   EXPECT_EQ(normal.width, 32u);
   EXPECT_EQ(normal.height, 32u);
@@ -330,9 +330,9 @@ GltfBuilder nodeTree() {
   return gltf;
 }
 
-std::vector<glm::vec3> positionsOf(const render::MeshData& mesh) {
+std::vector<glm::vec3> positionsOf(const scene::MeshData& mesh) {
   std::vector<glm::vec3> positions;
-  for (const render::Vertex& vertex : mesh.vertices) positions.push_back(vertex.position);
+  for (const scene::Vertex& vertex : mesh.vertices) positions.push_back(vertex.position);
   return positions;
 }
 
@@ -451,7 +451,7 @@ TEST_F(GltfModelTest, embedded_data_uri_image_is_decoded) {
       .write(root_ / "embedded.gltf");
   const game::GltfModel model = game::loadGltfModel(root_ / "embedded.gltf", root_);
   ASSERT_TRUE(model.material && model.material->colorTexture);
-  const render::TextureDesc& texture = *model.material->colorTexture;
+  const scene::TextureDesc& texture = *model.material->colorTexture;
   EXPECT_EQ(texture.name, (root_ / "embedded.gltf").string() + " image 0");
   EXPECT_EQ(texture.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
   EXPECT_EQ(model.filesRead, std::vector<fs::path>{root_ / "embedded.gltf"});

@@ -20,7 +20,7 @@ using game::PlayerInput;
 struct LevelBuilder {
   game::Level level;
   LevelBuilder(const glm::vec3& eye = {0.0f, 1.65f, 0.0f}) { level.camera.position = eye; }
-  uint32_t add(render::MeshData mesh, const glm::vec3& position,
+  uint32_t add(scene::MeshData mesh, const glm::vec3& position,
                const glm::vec3& rotationDegrees = glm::vec3(0.0f)) {
     level.meshes.push_back(std::move(mesh));
     game::Entity entity;
@@ -39,10 +39,10 @@ struct LevelBuilder {
 };
 
 // A ramp rising towards −Z from the line z = z0 at y = 0: a two-sided quad of `length`.
-render::MeshData ramp(float degrees, float z0, float length) {
+scene::MeshData ramp(float degrees, float z0, float length) {
   const float h = length * std::sin(glm::radians(degrees));
   const float z1 = z0 - length * std::cos(glm::radians(degrees));
-  render::MeshData mesh;
+  scene::MeshData mesh;
   for (const glm::vec3& p :
        {glm::vec3(-3, 0, z0), glm::vec3(3, 0, z0), glm::vec3(3, h, z1), glm::vec3(-3, h, z1)})
     mesh.vertices.push_back({p});

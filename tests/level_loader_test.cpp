@@ -15,7 +15,7 @@
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
 #include "game/primitives.hpp"
-#include "render/color.hpp"
+#include "scene/color.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace {
@@ -98,7 +98,7 @@ struct GltfFile {
   std::string buffer;
 };
 
-GltfFile makeGltf(const render::MeshData& mesh, IndexType indexType) {
+GltfFile makeGltf(const scene::MeshData& mesh, IndexType indexType) {
   GltfFile file;
   for (const auto& vertex : mesh.vertices) {
     for (int axis = 0; axis < 3; ++axis) appendBytes(file.buffer, vertex.position[axis]);
@@ -154,7 +154,7 @@ void writeGltf(const fs::path& path, GltfFile file, bool embedded) {
 }
 
 // A mesh with no holes is closed around `center` when every face points away from it.
-void expectOutwardFacing(const render::MeshData& mesh, const glm::vec3& center = glm::vec3(0.0f)) {
+void expectOutwardFacing(const scene::MeshData& mesh, const glm::vec3& center = glm::vec3(0.0f)) {
   ASSERT_EQ(mesh.indices.size() % 3, 0u);
   for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
     const glm::vec3 a = mesh.vertices.at(mesh.indices[i]).position;
@@ -176,13 +176,13 @@ void expectOutwardFacing(const render::MeshData& mesh, const glm::vec3& center =
 // ----- colour -----
 
 TEST(Color, srgb_conversion_uses_the_exact_curves) {
-  EXPECT_FLOAT_EQ(render::srgbToLinear(0.5f), 0.21404114f);
-  EXPECT_FLOAT_EQ(render::srgbToLinear(0.04045f), 0.04045f / 12.92f);  // linear segment
-  EXPECT_FLOAT_EQ(render::srgbToLinear(1.0f), 1.0f);
-  EXPECT_FLOAT_EQ(render::srgbToLinear(0.0f), 0.0f);
-  EXPECT_FLOAT_EQ(render::linearToSrgb(0.002f), 12.92f * 0.002f);
-  EXPECT_FLOAT_EQ(render::linearToSrgb(0.21404114f), 0.5f);
-  const glm::vec3 linear = render::srgbToLinear(glm::vec3(0.2f, 0.5f, 1.0f));
+  EXPECT_FLOAT_EQ(scene::srgbToLinear(0.5f), 0.21404114f);
+  EXPECT_FLOAT_EQ(scene::srgbToLinear(0.04045f), 0.04045f / 12.92f);  // linear segment
+  EXPECT_FLOAT_EQ(scene::srgbToLinear(1.0f), 1.0f);
+  EXPECT_FLOAT_EQ(scene::srgbToLinear(0.0f), 0.0f);
+  EXPECT_FLOAT_EQ(scene::linearToSrgb(0.002f), 12.92f * 0.002f);
+  EXPECT_FLOAT_EQ(scene::linearToSrgb(0.21404114f), 0.5f);
+  const glm::vec3 linear = scene::srgbToLinear(glm::vec3(0.2f, 0.5f, 1.0f));
   EXPECT_FLOAT_EQ(linear.x, 0.033104767f);
   EXPECT_FLOAT_EQ(linear.y, 0.21404114f);
   EXPECT_FLOAT_EQ(linear.z, 1.0f);
@@ -275,11 +275,11 @@ TEST(LevelLoader, loader_reads_a_complete_level_with_every_value_converted) {
   EXPECT_EQ(level.entities[2].scale, glm::vec3(1, 2, 3));
 
   ASSERT_EQ(level.lightIds, (std::vector<std::string>{"sun", "bulb_light"}));
-  EXPECT_EQ(level.lights[0].type, render::LightType::Directional);
+  EXPECT_EQ(level.lights[0].type, scene::LightType::Directional);
   EXPECT_EQ(level.lights[0].direction, glm::vec3(0, -1, 0));  // normalised
   EXPECT_EQ(level.lights[0].color, glm::vec3(1.0f));          // white by default
   EXPECT_FLOAT_EQ(level.lights[0].intensity, 3.0f);
-  EXPECT_EQ(level.lights[1].type, render::LightType::Point);
+  EXPECT_EQ(level.lights[1].type, scene::LightType::Point);
   EXPECT_EQ(level.lights[1].position, glm::vec3(0, 3, 0));
   EXPECT_FLOAT_EQ(level.lights[1].color.g, 0.21404114f);
   EXPECT_FLOAT_EQ(level.lights[1].intensity, 60.0f);
@@ -366,23 +366,23 @@ TEST(LevelLoader, loader_reads_every_field_of_format_1) {
   // Sky colours are converted from sRGB, then multiplied by sky_intensity.
   EXPECT_FLOAT_EQ(level.environment.skyZenith.r, 2.0f);
   EXPECT_FLOAT_EQ(level.environment.skyZenith.g, 0.0f);
-  EXPECT_FLOAT_EQ(level.environment.skyZenith.b, 2.0f * render::srgbToLinear(0.5f));
+  EXPECT_FLOAT_EQ(level.environment.skyZenith.b, 2.0f * scene::srgbToLinear(0.5f));
   EXPECT_EQ(level.environment.skyHorizon, glm::vec3(0.0f));
 
   ASSERT_EQ(level.materials.size(), 4u);
-  const render::MaterialDesc& plain = level.materials[0];
-  EXPECT_EQ(plain.kind, render::MaterialKind::Diffuse);
+  const scene::MaterialDesc& plain = level.materials[0];
+  EXPECT_EQ(plain.kind, scene::MaterialKind::Diffuse);
   EXPECT_EQ(plain.baseColor, glm::vec3(1.0f));  // white by default
   EXPECT_FLOAT_EQ(plain.specular, 0.0f);
   EXPECT_FLOAT_EQ(plain.roughness, 0.5f);
   EXPECT_EQ(plain.colorTexture, -1);
   EXPECT_EQ(plain.normalTexture, -1);
   // Tints are linear: reflectance times tint, no sRGB conversion.
-  EXPECT_EQ(level.materials[1].kind, render::MaterialKind::Mirror);
+  EXPECT_EQ(level.materials[1].kind, scene::MaterialKind::Mirror);
   EXPECT_EQ(level.materials[1].mirrorTint, glm::vec3(0.5f, 0.25f, 0.125f));
-  EXPECT_EQ(level.materials[2].kind, render::MaterialKind::Mirror);
+  EXPECT_EQ(level.materials[2].kind, scene::MaterialKind::Mirror);
   EXPECT_EQ(level.materials[2].mirrorTint, glm::vec3(1.0f));
-  EXPECT_EQ(level.materials[3].kind, render::MaterialKind::Glass);
+  EXPECT_EQ(level.materials[3].kind, scene::MaterialKind::Glass);
   EXPECT_EQ(level.materials[3].glassTint, glm::vec3(0.2f, 0.4f, 1.0f));
   EXPECT_TRUE(level.textures.empty());
 
@@ -435,25 +435,25 @@ TEST(LevelLoader, loader_reads_every_field_of_format_1) {
   EXPECT_TRUE(level.entities[8].interactable->startsOn);
 
   ASSERT_EQ(level.lightIds, (std::vector<std::string>{"sun", "lamp", "panel", "globe", "spot"}));
-  const render::LightDesc& sun = level.lights[0];
-  EXPECT_EQ(sun.type, render::LightType::Directional);
+  const scene::LightDesc& sun = level.lights[0];
+  EXPECT_EQ(sun.type, scene::LightType::Directional);
   EXPECT_EQ(sun.direction, glm::vec3(0, -0.6f, 0.8f));
   EXPECT_FLOAT_EQ(sun.angularDiameterRadians, glm::radians(0.5f));
   EXPECT_TRUE(sun.enabled);
   EXPECT_FLOAT_EQ(level.lights[1].angularDiameterRadians, 0.0f);
-  const render::LightDesc& panel = level.lights[2];
-  EXPECT_EQ(panel.type, render::LightType::Rectangle);
+  const scene::LightDesc& panel = level.lights[2];
+  EXPECT_EQ(panel.type, scene::LightType::Rectangle);
   EXPECT_EQ(panel.position, glm::vec3(0, 3, 0));
   EXPECT_EQ(panel.direction, glm::vec3(0, -1, 0));
   EXPECT_EQ(panel.size, glm::vec2(1, 0.5f));
   EXPECT_FLOAT_EQ(panel.intensity, 10.0f);
-  const render::LightDesc& globe = level.lights[3];
-  EXPECT_EQ(globe.type, render::LightType::Sphere);
+  const scene::LightDesc& globe = level.lights[3];
+  EXPECT_EQ(globe.type, scene::LightType::Sphere);
   EXPECT_EQ(globe.position, glm::vec3(2, 2, 2));
   EXPECT_FLOAT_EQ(globe.radius, 0.2f);
   EXPECT_FLOAT_EQ(globe.intensity, 20.0f);
-  const render::LightDesc& spot = level.lights[4];
-  EXPECT_EQ(spot.type, render::LightType::Disk);
+  const scene::LightDesc& spot = level.lights[4];
+  EXPECT_EQ(spot.type, scene::LightType::Disk);
   EXPECT_EQ(spot.direction, glm::vec3(0, 0, 1));
   EXPECT_FLOAT_EQ(spot.radius, 0.3f);
   EXPECT_FALSE(spot.enabled);
@@ -507,7 +507,7 @@ TEST(LevelLoader, loader_reads_every_field_of_format_1) {
   EXPECT_EQ(level.sourceFiles, std::vector<fs::path>{"levels/blue.json"});
   EXPECT_TRUE(level.warnings.empty());
 
-  const render::SceneDesc scene = game::buildSceneDesc(level);
+  const scene::SceneDesc scene = game::buildSceneDesc(level);
   EXPECT_EQ(scene.maxMirrorBounces, 7u);
   ASSERT_EQ(scene.instances.size(), 9u);
   EXPECT_FALSE(scene.instances[1].castsShadow);
@@ -604,7 +604,7 @@ TEST(LevelLoader, scene_description_has_one_instance_per_entity) {
                       "b": {"mesh": "cube", "material": "grey", "position": [4, 5, 6]}},
   "environment": {"ambient": "#ffffff"})");
   const game::Level level = game::parseLevel(text, "levels/test.json");
-  const render::SceneDesc scene = game::buildSceneDesc(level);
+  const scene::SceneDesc scene = game::buildSceneDesc(level);
   EXPECT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].indices.size(), 36u);
   EXPECT_EQ(scene.materials.size(), 1u);
@@ -619,7 +619,7 @@ TEST(LevelLoader, scene_description_has_one_instance_per_entity) {
 // ----- primitives -----
 
 TEST(Primitives, box_has_flat_outward_faces) {
-  const render::MeshData box = game::primitives::box({2, 4, 6});
+  const scene::MeshData box = game::primitives::box({2, 4, 6});
   EXPECT_EQ(box.vertices.size(), 24u);
   EXPECT_EQ(box.indices.size(), 36u);
   expectOutwardFacing(box);
@@ -631,7 +631,7 @@ TEST(Primitives, box_has_flat_outward_faces) {
 }
 
 TEST(Primitives, sphere_has_smooth_outward_normals) {
-  const render::MeshData sphere = game::primitives::sphere(2.0f, 12, 6);
+  const scene::MeshData sphere = game::primitives::sphere(2.0f, 12, 6);
   EXPECT_EQ(sphere.vertices.size(), 7u * 13u);
   EXPECT_EQ(sphere.indices.size(), 6u * 12u * 5u);
   expectOutwardFacing(sphere);
@@ -642,7 +642,7 @@ TEST(Primitives, sphere_has_smooth_outward_normals) {
 }
 
 TEST(Primitives, plane_faces_up) {
-  const render::MeshData plane = game::primitives::plane(4.0f, 2.0f);
+  const scene::MeshData plane = game::primitives::plane(4.0f, 2.0f);
   EXPECT_EQ(plane.vertices.size(), 4u);
   EXPECT_EQ(plane.indices.size(), 6u);
   for (const auto& vertex : plane.vertices) {
@@ -655,7 +655,7 @@ TEST(Primitives, plane_faces_up) {
 }
 
 TEST(Primitives, cylinder_has_smooth_sides_and_flat_caps) {
-  const render::MeshData cylinder = game::primitives::cylinder(1.0f, 3.0f, 8);
+  const scene::MeshData cylinder = game::primitives::cylinder(1.0f, 3.0f, 8);
   EXPECT_EQ(cylinder.vertices.size(), 4u * 9u);
   EXPECT_EQ(cylinder.indices.size(), 12u * 8u);
   expectOutwardFacing(cylinder);
@@ -1177,14 +1177,14 @@ TEST_F(TempDirTest, loader_rejects_symlink_that_leaves_the_level_directory) {
 }
 
 TEST_F(TempDirTest, level_loads_a_gltf_box_next_to_the_level) {
-  const render::MeshData box = game::primitives::box({1, 2, 3});
+  const scene::MeshData box = game::primitives::box({1, 2, 3});
   writeGltf(root_ / "levels" / "models" / "box.gltf", makeGltf(box, IndexType::U16), false);
   writeFile(
       root_ / "levels" / "one.json",
       replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", R"({"gltf": "models/box.gltf"})"));
   const game::Level level = game::loadLevel(root_ / "levels" / "one.json");
   ASSERT_EQ(level.meshes.size(), 1u);
-  const render::MeshData& mesh = level.meshes[0];
+  const scene::MeshData& mesh = level.meshes[0];
   EXPECT_EQ(mesh.name, "cube");  // the level's mesh id
   EXPECT_EQ(mesh.indices.size() / 3, 12u);
   EXPECT_EQ(mesh.vertices.size(), 24u);
@@ -1282,8 +1282,8 @@ TEST_F(TempDirTest, gltf_material_textures_and_source_files) {
   EXPECT_EQ(level.entities[1].material, 3u);
   EXPECT_EQ(level.entities[2].material, 0u);
   EXPECT_EQ(level.entities[3].material, 4u);
-  const render::MaterialDesc& wood = level.materials[3];
-  EXPECT_EQ(wood.kind, render::MaterialKind::Diffuse);
+  const scene::MaterialDesc& wood = level.materials[3];
+  EXPECT_EQ(wood.kind, scene::MaterialKind::Diffuse);
   EXPECT_EQ(wood.baseColor, glm::vec3(0.9f, 0.85f, 0.8f));  // glTF factors are linear already
   EXPECT_FLOAT_EQ(wood.specular, 0.04f);                    // metallic 0
   EXPECT_FLOAT_EQ(wood.roughness, 0.75f);
@@ -1348,7 +1348,7 @@ TEST_F(TempDirTest, texture_paths_follow_the_path_rules) {
 
 TEST_F(TempDirTest, gltf_with_embedded_buffer_and_byte_indices_loads) {
   writeGltf(root_ / "box.gltf", makeGltf(game::primitives::box(glm::vec3(1)), IndexType::U8), true);
-  const render::MeshData mesh = game::loadGltfMesh(root_ / "box.gltf", root_);
+  const scene::MeshData mesh = game::loadGltfMesh(root_ / "box.gltf", root_);
   EXPECT_EQ(mesh.indices.size(), 36u);
   EXPECT_EQ(mesh.name, "box");
   expectOutwardFacing(mesh);
@@ -1368,17 +1368,17 @@ TEST_F(TempDirTest, glb_with_its_buffer_in_the_binary_chunk_loads) {
   appendBytes(glb, static_cast<uint32_t>(bin.size()));
   glb += std::string("BIN\0", 4) + bin;
   writeFile(root_ / "box.glb", glb);
-  const render::MeshData mesh = game::loadGltfMesh(root_ / "box.glb", root_);
+  const scene::MeshData mesh = game::loadGltfMesh(root_ / "box.glb", root_);
   EXPECT_EQ(mesh.indices.size(), 36u);
   expectOutwardFacing(mesh);
 }
 
 TEST_F(TempDirTest, gltf_without_indices_gets_flat_normals) {
-  render::MeshData unindexed;
-  const render::MeshData box = game::primitives::box(glm::vec3(2));
+  scene::MeshData unindexed;
+  const scene::MeshData box = game::primitives::box(glm::vec3(2));
   for (const uint32_t index : box.indices) unindexed.vertices.push_back(box.vertices[index]);
   writeGltf(root_ / "soup.gltf", makeGltf(unindexed, IndexType::None), true);
-  const render::MeshData mesh = game::loadGltfMesh(root_ / "soup.gltf", root_);
+  const scene::MeshData mesh = game::loadGltfMesh(root_ / "soup.gltf", root_);
   EXPECT_EQ(mesh.vertices.size(), 36u);
   EXPECT_EQ(mesh.indices.size(), 36u);
   expectOutwardFacing(mesh);
@@ -1389,7 +1389,7 @@ TEST_F(TempDirTest, gltf_node_transforms_apply_and_mirroring_keeps_faces_outward
   file.document["nodes"] = {{{"children", {1}}, {"translation", {10, 0, 0}}},
                             {{"mesh", 0}, {"scale", {-2, 1, 1}}}};
   writeGltf(root_ / "mirrored.gltf", file, true);
-  const render::MeshData mesh = game::loadGltfMesh(root_ / "mirrored.gltf", root_);
+  const scene::MeshData mesh = game::loadGltfMesh(root_ / "mirrored.gltf", root_);
   EXPECT_EQ(mesh.indices.size(), 36u);
   for (const auto& vertex : mesh.vertices) EXPECT_FLOAT_EQ(std::abs(vertex.position.x - 10), 1.0f);
   expectOutwardFacing(mesh, {10, 0, 0});
@@ -1399,7 +1399,7 @@ TEST_F(TempDirTest, gltf_mesh_can_be_picked_by_name) {
   GltfFile file = makeGltf(game::primitives::box(glm::vec3(1)), IndexType::U16);
   file.document["nodes"][0]["translation"] = {5, 0, 0};
   writeGltf(root_ / "named.gltf", file, true);
-  const render::MeshData mesh = game::loadGltfMesh(root_ / "named.gltf", root_, "Cube");
+  const scene::MeshData mesh = game::loadGltfMesh(root_ / "named.gltf", root_, "Cube");
   EXPECT_EQ(mesh.name, "Cube");
   expectOutwardFacing(mesh);  // in the mesh's own space: the node's translation is not applied
   try {

@@ -32,7 +32,7 @@ inline game::Level translatedLevel(game::Level level, const glm::vec3& offset) {
       for (game::Keyframe& keyframe : entity.mover->keyframes) keyframe.position += offset;
     }
   }
-  for (render::LightDesc& light : level.lights) light.position += offset;
+  for (scene::LightDesc& light : level.lights) light.position += offset;
   if (level.goal) detail::translateGoal(*level.goal, offset);
   for (game::LoseCondition& lose : level.lose) lose.below += offset.y;
   return level;
@@ -54,11 +54,11 @@ inline game::Level scaledLevel(game::Level level, float factor) {
       entity.interactable->start *= factor;
     }
   }
-  for (render::LightDesc& light : level.lights) {
+  for (scene::LightDesc& light : level.lights) {
     light.position *= factor;
     light.radius *= factor;
     light.size *= factor;
-    if (light.type == render::LightType::Point) light.intensity *= factor * factor;
+    if (light.type == scene::LightType::Point) light.intensity *= factor * factor;
   }
   if (level.goal) detail::scaleGoal(*level.goal, factor);
   for (game::LoseCondition& lose : level.lose) lose.below *= factor;

@@ -106,7 +106,7 @@ struct LevelBuilder {
   }
   uint32_t floor() { return box({40.0f, 0.1f, 40.0f}, {0.0f, -0.05f, 0.0f}); }
   uint32_t light(bool enabled) {
-    render::LightDesc light;
+    scene::LightDesc light;
     light.enabled = enabled;
     level.lights.push_back(light);
     level.lightIds.push_back("l" + std::to_string(level.lights.size() - 1));
@@ -147,7 +147,7 @@ TEST(WorldCollision, ClosestSegmentTriangle) {
 
 TEST(WorldCollision, BigMeshQueriesMatchABruteForceScan) {
   // A 100 × 100 grid of tiny boxes' worth of triangles in one mesh (a stand-in for a glTF).
-  render::MeshData mesh;
+  scene::MeshData mesh;
   for (int i = 0; i < 60; ++i) {
     for (int j = 0; j < 60; ++j) {
       const uint32_t base = uint32_t(mesh.vertices.size());
@@ -356,7 +356,7 @@ TEST(World, CameraIsTheEyeWithTheLevelsFieldOfView) {
   b.level.camera.pitchDegrees = -10.0f;
   game::World world(b.level);
   world.step({});
-  const render::CameraDesc camera = world.camera();
+  const scene::CameraDesc camera = world.camera();
   EXPECT_EQ(camera.verticalFovDegrees, 72.0f);
   EXPECT_EQ(camera.yawDegrees, 30.0f);
   EXPECT_EQ(camera.pitchDegrees, -10.0f);

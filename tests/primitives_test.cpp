@@ -12,7 +12,7 @@
 
 namespace {
 
-void expectUvsInUnitSquare(const render::MeshData& mesh) {
+void expectUvsInUnitSquare(const scene::MeshData& mesh) {
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
     const glm::vec2 uv = mesh.vertices[i].uv;
     EXPECT_TRUE(uv.x >= 0.0f && uv.x <= 1.0f && uv.y >= 0.0f && uv.y <= 1.0f)
@@ -23,7 +23,7 @@ void expectUvsInUnitSquare(const render::MeshData& mesh) {
 // Image rows run downwards (v grows down), so a texture that reads correctly on a front face
 // turns counter-clockwise corners clockwise in (u, v): every triangle's signed UV area is
 // negative. A positive one would show the texture mirrored.
-void expectTextureUnmirrored(const render::MeshData& mesh) {
+void expectTextureUnmirrored(const scene::MeshData& mesh) {
   for (std::size_t i = 0; i < mesh.indices.size(); i += 3) {
     const glm::vec2 a = mesh.vertices.at(mesh.indices[i]).uv;
     const glm::vec2 b = mesh.vertices.at(mesh.indices[i + 1]).uv;
@@ -34,7 +34,7 @@ void expectTextureUnmirrored(const render::MeshData& mesh) {
 }
 
 TEST(PrimitiveUvs, box_faces_each_hold_the_whole_texture) {
-  const render::MeshData box = game::primitives::box({2, 4, 6});
+  const scene::MeshData box = game::primitives::box({2, 4, 6});
   ASSERT_EQ(box.vertices.size(), 24u);
   expectUvsInUnitSquare(box);
   expectTextureUnmirrored(box);
@@ -51,12 +51,12 @@ TEST(PrimitiveUvs, box_faces_each_hold_the_whole_texture) {
 
 TEST(PrimitiveUvs, sphere_u_runs_around_and_v_from_the_top) {
   const uint32_t segments = 12, rings = 6;
-  const render::MeshData sphere = game::primitives::sphere(2.0f, segments, rings);
+  const scene::MeshData sphere = game::primitives::sphere(2.0f, segments, rings);
   expectUvsInUnitSquare(sphere);
   expectTextureUnmirrored(sphere);
   for (uint32_t ring = 0; ring <= rings; ++ring) {
     for (uint32_t segment = 0; segment <= segments; ++segment) {
-      const render::Vertex& vertex = sphere.vertices.at(ring * (segments + 1) + segment);
+      const scene::Vertex& vertex = sphere.vertices.at(ring * (segments + 1) + segment);
       EXPECT_FLOAT_EQ(vertex.uv.x, static_cast<float>(segment) / segments);
       EXPECT_FLOAT_EQ(vertex.uv.y, static_cast<float>(ring) / rings);
     }
@@ -66,10 +66,10 @@ TEST(PrimitiveUvs, sphere_u_runs_around_and_v_from_the_top) {
 }
 
 TEST(PrimitiveUvs, plane_u_follows_x_and_v_follows_z) {
-  const render::MeshData plane = game::primitives::plane(4.0f, 2.0f);
+  const scene::MeshData plane = game::primitives::plane(4.0f, 2.0f);
   expectUvsInUnitSquare(plane);
   expectTextureUnmirrored(plane);
-  for (const render::Vertex& vertex : plane.vertices) {
+  for (const scene::Vertex& vertex : plane.vertices) {
     EXPECT_FLOAT_EQ(vertex.uv.x, vertex.position.x / 4.0f + 0.5f);
     EXPECT_FLOAT_EQ(vertex.uv.y, vertex.position.z / 2.0f + 0.5f);
   }
@@ -78,17 +78,17 @@ TEST(PrimitiveUvs, plane_u_follows_x_and_v_follows_z) {
 TEST(PrimitiveUvs, cylinder_sides_wrap_and_caps_lie_flat) {
   const uint32_t segments = 8;
   const float radius = 1.0f, height = 3.0f;
-  const render::MeshData cylinder = game::primitives::cylinder(radius, height, segments);
+  const scene::MeshData cylinder = game::primitives::cylinder(radius, height, segments);
   expectUvsInUnitSquare(cylinder);
   expectTextureUnmirrored(cylinder);
   const uint32_t sideVertices = 2 * (segments + 1);
   for (uint32_t i = 0; i < sideVertices; ++i) {
-    const render::Vertex& vertex = cylinder.vertices[i];
+    const scene::Vertex& vertex = cylinder.vertices[i];
     EXPECT_FLOAT_EQ(vertex.uv.x, static_cast<float>(i / 2) / segments) << "side vertex " << i;
     EXPECT_EQ(vertex.uv.y, vertex.position.y > 0 ? 0.0f : 1.0f) << "side vertex " << i;
   }
   for (std::size_t i = sideVertices; i < cylinder.vertices.size(); ++i) {
-    const render::Vertex& vertex = cylinder.vertices[i];
+    const scene::Vertex& vertex = cylinder.vertices[i];
     const float expectedV = vertex.normal.y > 0 ? 0.5f + vertex.position.z / (2 * radius)
                                                 : 0.5f - vertex.position.z / (2 * radius);
     EXPECT_NEAR(vertex.uv.x, 0.5f + vertex.position.x / (2 * radius), 1e-6f) << "cap vertex " << i;

@@ -7,15 +7,15 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "game/primitives.hpp"
-#include "render/probes.hpp"
 #include "render/vulkan_error.hpp"
+#include "scene/probes.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
 
-using render::MaterialDesc;
-using render::MaterialKind;
+using scene::MaterialDesc;
+using scene::MaterialKind;
 using test::at;
 using test::SceneBuilder;
 
@@ -41,15 +41,15 @@ MaterialDesc mirror() {
 
 class ProbeTest : public test::VulkanTest {
  protected:
-  static render::ProbeCounts measure(const render::SceneDesc& scene,
-                                     const render::ProbeRequest& request, uint32_t width,
-                                     uint32_t height, uint32_t frameIndex = 0) {
+  static scene::ProbeCounts measure(const scene::SceneDesc& scene,
+                                    const scene::ProbeRequest& request, uint32_t width,
+                                    uint32_t height, uint32_t frameIndex = 0) {
     render::RendererOptions options;
     options.width = width;
     options.height = height;
     render::Renderer renderer(context(), compiler(), scene, options);
     renderer.setProbes(request);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.frameIndex = frameIndex;
     renderer.renderFrame(frame, false);
     return renderer.probeCounts();
@@ -73,7 +73,7 @@ struct AnalyticCount {
   uint32_t certain = 0, uncertain = 0;
 };
 
-AnalyticCount analyticSphereCount(uint32_t width, uint32_t height, render::PixelBox box,
+AnalyticCount analyticSphereCount(uint32_t width, uint32_t height, scene::PixelBox box,
                                   float radius, float distance, uint32_t segments) {
   const float tanHalf = std::tan(0.5f * glm::radians(60.0f));
   const float aspect = float(width) / float(height);
@@ -102,8 +102,8 @@ TEST_F(ProbeTest, sphere_in_the_focus_region_gives_the_analytic_pixel_count) {
   const SceneBuilder builder = sphereAhead(orb);
   for (const glm::vec2 region : {glm::vec2(1.0f, 1.0f), glm::vec2(0.1f, 0.1f)}) {
     const uint32_t width = 96, height = 64;
-    const render::ProbeCounts counts = measure(builder.scene, {{{orb, region}}, {}}, width, height);
-    const render::PixelBox box = render::focusPixelBox(region, width, height);
+    const scene::ProbeCounts counts = measure(builder.scene, {{{orb, region}}, {}}, width, height);
+    const scene::PixelBox box = scene::focusPixelBox(region, width, height);
     const AnalyticCount expected =
         analyticSphereCount(width, height, box, kRadius, kDistance, kSegments);
     EXPECT_EQ(counts.focusRegionPixels[0], box.pixels());
@@ -115,7 +115,7 @@ TEST_F(ProbeTest, sphere_in_the_focus_region_gives_the_analytic_pixel_count) {
 }
 
 TEST_F(ProbeTest, focus_box_is_centred_and_rounded) {
-  const render::PixelBox box = render::focusPixelBox({0.2f, 0.25f}, 320, 180);
+  const scene::PixelBox box = scene::focusPixelBox({0.2f, 0.25f}, 320, 180);
   EXPECT_EQ(box.x0, 128u);
   EXPECT_EQ(box.x1, 192u);
   EXPECT_EQ(box.y0, 67u);  // 45 rows; the odd row goes to the bottom: 67 above, 68 below
@@ -148,7 +148,7 @@ TEST_F(ProbeTest, orb_seen_only_in_a_mirror_counts) {
                    builder.material(mirror()), turned);
   const uint32_t orb = builder.instance(builder.mesh(game::primitives::sphere(0.4f, 32, 16)),
                                         builder.material(grey()), at({3, 0, -3}));
-  const render::ProbeCounts counts = measure(builder.scene, {{{orb, {0.3f, 0.3f}}}, {}}, 64, 48);
+  const scene::ProbeCounts counts = measure(builder.scene, {{{orb, {0.3f, 0.3f}}}, {}}, 64, 48);
   EXPECT_GT(counts.focusPixels[0], 0u);
   // Without the mirror the orb is not in view.
   SceneBuilder bare;
@@ -160,8 +160,8 @@ TEST_F(ProbeTest, orb_seen_only_in_a_mirror_counts) {
 }
 
 // 64 points on a horizontal sensor at y = 0 (an 8x8 grid over [-1, 1]^2), facing up.
-render::ExposureProbeDesc sensorGrid(uint32_t light) {
-  render::ExposureProbeDesc probe;
+scene::ExposureProbeDesc sensorGrid(uint32_t light) {
+  scene::ExposureProbeDesc probe;
   probe.light = light;
   for (int j = 0; j < 8; ++j) {
     for (int i = 0; i < 8; ++i) {
@@ -173,7 +173,7 @@ render::ExposureProbeDesc sensorGrid(uint32_t light) {
   return probe;
 }
 
-render::SceneDesc sensorScene(render::LightDesc light, bool blockHalf, bool glassAbove) {
+scene::SceneDesc sensorScene(scene::LightDesc light, bool blockHalf, bool glassAbove) {
   SceneBuilder builder;
   builder.instance(builder.mesh(game::primitives::box({2, 0.002f, 2})), builder.material(grey()),
                    at({0, -0.001f, 0}));
@@ -188,9 +188,9 @@ render::SceneDesc sensorScene(render::LightDesc light, bool blockHalf, bool glas
   return builder.scene;
 }
 
-render::LightDesc pointLightAbove() {
-  render::LightDesc light;
-  light.type = render::LightType::Point;
+scene::LightDesc pointLightAbove() {
+  scene::LightDesc light;
+  light.type = scene::LightType::Point;
   light.position = {0, 3, 0};
   light.intensity = 10.0f;
   return light;
@@ -199,16 +199,16 @@ render::LightDesc pointLightAbove() {
 TEST_F(ProbeTest, exposure_is_exact_for_a_point_light_blocked_over_half_the_sensor) {
   EXPECT_EQ(measure(sensorScene(pointLightAbove(), false, false), {{}, {sensorGrid(0)}}, 8, 8)
                 .exposureFixed[0],
-            64u * render::ProbeCounts::exposureOne);
+            64u * scene::ProbeCounts::exposureOne);
   // The blocker's shadow from a light at x = 0 falls on x < 0 only, edge at 0: 32 of 64.
-  const render::ProbeCounts half =
+  const scene::ProbeCounts half =
       measure(sensorScene(pointLightAbove(), true, false), {{}, {sensorGrid(0)}}, 8, 8);
-  EXPECT_EQ(half.exposureFixed[0], 32u * render::ProbeCounts::exposureOne);
+  EXPECT_EQ(half.exposureFixed[0], 32u * scene::ProbeCounts::exposureOne);
   EXPECT_FLOAT_EQ(half.exposure(0), 0.5f);
 }
 
 TEST_F(ProbeTest, switched_off_light_gives_zero_and_glass_gives_its_tint) {
-  render::LightDesc off = pointLightAbove();
+  scene::LightDesc off = pointLightAbove();
   off.enabled = false;
   EXPECT_EQ(measure(sensorScene(off, false, false), {{}, {sensorGrid(0)}}, 8, 8).exposureFixed[0],
             0u);
@@ -219,12 +219,12 @@ TEST_F(ProbeTest, switched_off_light_gives_zero_and_glass_gives_its_tint) {
 }
 
 TEST_F(ProbeTest, area_light_gives_a_partial_deterministic_exposure) {
-  render::LightDesc sphere = pointLightAbove();
-  sphere.type = render::LightType::Sphere;
+  scene::LightDesc sphere = pointLightAbove();
+  sphere.type = scene::LightType::Sphere;
   sphere.radius = 1.0f;
-  const render::SceneDesc scene = sensorScene(sphere, true, false);
-  const render::ProbeCounts first = measure(scene, {{}, {sensorGrid(0)}}, 8, 8, 7);
-  const render::ProbeCounts again = measure(scene, {{}, {sensorGrid(0)}}, 8, 8, 7);
+  const scene::SceneDesc scene = sensorScene(sphere, true, false);
+  const scene::ProbeCounts first = measure(scene, {{}, {sensorGrid(0)}}, 8, 8, 7);
+  const scene::ProbeCounts again = measure(scene, {{}, {sensorGrid(0)}}, 8, 8, 7);
   EXPECT_EQ(first.exposureFixed[0], again.exposureFixed[0]);
   // More than the hard shadow's half (penumbra points on the blocked side see part of the
   // sphere), less than all.
@@ -233,7 +233,7 @@ TEST_F(ProbeTest, area_light_gives_a_partial_deterministic_exposure) {
 }
 
 TEST_F(ProbeTest, exposure_probes_need_a_scene_that_asks_for_them) {
-  render::SceneDesc scene = sensorScene(pointLightAbove(), false, false);
+  scene::SceneDesc scene = sensorScene(pointLightAbove(), false, false);
   scene.exposureProbes = false;
   render::RendererOptions options;
   options.width = 8;

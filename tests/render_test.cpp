@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/color.hpp"
+#include "scene/color.hpp"
 #include "render/vulkan_error.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -33,17 +33,17 @@ std::string planeLevel(const std::string& colour, const std::string& lights,
 }
 
 int expectedByte(double linearRadiance) {
-  return int(std::lround(255.0 * render::linearToSrgb(float(std::min(linearRadiance, 1.0)))));
+  return int(std::lround(255.0 * scene::linearToSrgb(float(std::min(linearRadiance, 1.0)))));
 }
 
 TEST_F(VulkanTest, lambert_plane_under_directional_light_matches_rho_e_over_pi) {
   const float encodedAlbedo = 0.8f;
-  const double albedo = render::srgbToLinear(encodedAlbedo);
+  const double albedo = scene::srgbToLinear(encodedAlbedo);
   const double irradiance = 2.0;
   const auto image = renderLevelText(
       planeLevel("[0.8, 0.8, 0.8]",
                  R"("sun": {"type": "directional", "direction": [0, -1, 0], "intensity": 2.0})"),
-      33, 33, render::Tonemap::Identity);
+      33, 33, scene::Tonemap::Identity);
   const int expected = expectedByte(albedo * irradiance / M_PI);  // 0.38439 -> 0.65529 -> 167
   EXPECT_EQ(expected, 167);
   for (uint32_t y = 0; y < image.height; ++y)
@@ -53,23 +53,23 @@ TEST_F(VulkanTest, lambert_plane_under_directional_light_matches_rho_e_over_pi) 
 }
 
 TEST_F(VulkanTest, exposure_scales_linear_radiance_before_encoding) {
-  const double albedo = render::srgbToLinear(0.8f);
+  const double albedo = scene::srgbToLinear(0.8f);
   const auto image = renderLevelText(
       planeLevel("[0.8, 0.8, 0.8]",
                  R"("sun": {"type": "directional", "direction": [0, -1, 0], "intensity": 2.0})"),
-      9, 9, render::Tonemap::Identity, 0.25f);
+      9, 9, scene::Tonemap::Identity, 0.25f);
   EXPECT_NEAR(channel(image, 4, 4, 1), expectedByte(0.25 * albedo * 2.0 / M_PI), 1);
 }
 
 TEST_F(VulkanTest, point_light_follows_inverse_square_and_cosine) {
   // Light 2 m above the plane's point under the camera: E = I / d^2 there, and at the image
   // edge the cosine and distance fall off as cos^3 / h^2.
-  const double albedo = render::srgbToLinear(1.0f);
+  const double albedo = scene::srgbToLinear(1.0f);
   const double intensity = 10.0;
   const auto image = renderLevelText(
       planeLevel("[1, 1, 1]",
                  R"("bulb": {"type": "point", "position": [0, 2, 0], "intensity": 10.0})"),
-      33, 33, render::Tonemap::Identity, 0.5f);
+      33, 33, scene::Tonemap::Identity, 0.5f);
   EXPECT_NEAR(channel(image, 16, 16, 0), expectedByte(0.5 * albedo / M_PI * intensity / 4.0), 1);
   // Centre of the rightmost column: the ray hits x = tan(30 deg) * (32.5/33 * 2 - 1)... at y=0.
   const double ndcX = (32.5 / 33.0) * 2.0 - 1.0;
@@ -88,11 +88,11 @@ TEST_F(VulkanTest, slab_between_sun_and_plane_casts_a_hard_shadow_beside_it) {
                  R"("sun": {"type": "directional", "direction": [1, -1, 0], "intensity": 2.0})",
                  R"(, "slab": {"box": {"size": [0.2, 0.02, 0.2]}})",
                  R"(, "slab": {"mesh": "slab", "material": "lambert", "position": [0, 0.3, 0]})"),
-      33, 33, render::Tonemap::Identity);
+      33, 33, scene::Tonemap::Identity);
   auto columnForFloorX = [](double x) {
     return uint32_t(std::floor((x / std::tan(M_PI / 6.0) + 1.0) * 0.5 * 33.0));
   };
-  const int lit = expectedByte(render::srgbToLinear(0.8f) * 2.0 * std::sqrt(0.5) / M_PI);
+  const int lit = expectedByte(scene::srgbToLinear(0.8f) * 2.0 * std::sqrt(0.5) / M_PI);
   EXPECT_NEAR(channel(image, columnForFloorX(-0.3), 16, 1), lit, 1);  // open floor
   EXPECT_EQ(channel(image, columnForFloorX(0.3), 16, 1), 0);          // in the shadow
   EXPECT_NEAR(channel(image, columnForFloorX(0.5), 16, 1), lit, 1);   // past the shadow
@@ -100,9 +100,9 @@ TEST_F(VulkanTest, slab_between_sun_and_plane_casts_a_hard_shadow_beside_it) {
 
 TEST_F(VulkanTest, same_level_renders_bit_identical_with_and_without_row_interleaving) {
   const game::Level level = game::loadLevel(test::sourceDir() / "levels" / "01_first_light.json");
-  const auto interleaved = renderLevel(level, 64, 37, render::Tonemap::Aces, 1.0f, 8);
-  const auto again = renderLevel(level, 64, 37, render::Tonemap::Aces, 1.0f, 8);
-  const auto plain = renderLevel(level, 64, 37, render::Tonemap::Aces, 1.0f, 1);
+  const auto interleaved = renderLevel(level, 64, 37, scene::Tonemap::Aces, 1.0f, 8);
+  const auto again = renderLevel(level, 64, 37, scene::Tonemap::Aces, 1.0f, 8);
+  const auto plain = renderLevel(level, 64, 37, scene::Tonemap::Aces, 1.0f, 1);
   EXPECT_EQ(interleaved.pixels, again.pixels);
   EXPECT_EQ(interleaved.pixels, plain.pixels);
 }
@@ -111,7 +111,7 @@ TEST_F(VulkanTest, first_level_matches_golden_image_within_tolerance) {
   const std::filesystem::path golden =
       test::sourceDir() / "tests" / "golden" / "01_first_light_160x90.png";
   const game::Level level = game::loadLevel(test::sourceDir() / "levels" / "01_first_light.json");
-  const auto image = renderLevel(level, 160, 90, render::Tonemap::Aces);
+  const auto image = renderLevel(level, 160, 90, scene::Tonemap::Aces);
   if (const char* update = std::getenv("SIGHTLINE_UPDATE_GOLDEN"); update && *update == '1') {
     render::writePng(golden, image);
     GTEST_SKIP() << "golden image rewritten: " << golden;
@@ -135,14 +135,14 @@ TEST_F(VulkanTest, moving_an_instance_updates_the_tlas_and_moving_it_back_restor
                  R"(, "block": {"box": {"size": [0.3, 0.3, 0.3]}})",
                  R"(, "block": {"mesh": "block", "material": "lambert", "position": [0, 0.3, 0]})"),
       test::sourceDir() / "tests" / "inline_level.json");
-  const render::SceneDesc scene = game::buildSceneDesc(level);
+  const scene::SceneDesc scene = game::buildSceneDesc(level);
   render::RendererOptions options;
   options.width = 17;
   options.height = 17;
   render::Renderer renderer(context(), compiler(), scene, options);
-  render::FrameDesc frame;
+  scene::FrameDesc frame;
   frame.camera = level.camera;
-  frame.tonemap = render::Tonemap::Identity;
+  frame.tonemap = scene::Tonemap::Identity;
   renderer.renderFrame(frame);
   const std::vector<uint8_t> before = renderer.pixels();
   // With the block far away, its shadow beside it disappears from the image.
@@ -168,7 +168,7 @@ TEST_F(VulkanTest, ray_gen_counts_one_primary_ray_per_pixel_and_one_shadow_ray_p
   options.width = 20;
   options.height = 10;
   render::Renderer renderer(context(), compiler(), game::buildSceneDesc(level), options);
-  render::FrameDesc frame;
+  scene::FrameDesc frame;
   frame.camera = level.camera;
   const render::FrameStats stats = renderer.renderFrame(frame, false);
   EXPECT_EQ(stats.surfaceRays, 200u);

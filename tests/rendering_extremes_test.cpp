@@ -13,15 +13,15 @@
 
 #include "game/primitives.hpp"
 #include "level_transforms.hpp"
-#include "render/color.hpp"
+#include "scene/color.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
 
-using render::LightDesc;
-using render::LightType;
-using render::MaterialDesc;
+using scene::LightDesc;
+using scene::LightType;
+using scene::MaterialDesc;
 using test::at;
 using test::channel;
 using test::SceneBuilder;
@@ -37,7 +37,7 @@ const char* const kShippedLevels[] = {"01_first_light",   "02_penumbra",     "03
                                       "07_crossing"};
 
 int expectedByte(double linear) {
-  return int(std::lround(255.0 * render::linearToSrgb(float(std::clamp(linear, 0.0, 1.0)))));
+  return int(std::lround(255.0 * scene::linearToSrgb(float(std::clamp(linear, 0.0, 1.0)))));
 }
 
 bool allFinite(const std::vector<glm::vec4>& texels) {
@@ -61,8 +61,8 @@ LightDesc sunAlong(const glm::vec3& direction, float irradiance) {
   return sun;
 }
 
-render::CameraDesc lookingDown(const glm::vec3& position, float fovDegrees = 60.0f) {
-  render::CameraDesc camera;
+scene::CameraDesc lookingDown(const glm::vec3& position, float fovDegrees = 60.0f) {
+  scene::CameraDesc camera;
   camera.position = position;
   camera.pitchDegrees = -90.0f;
   camera.verticalFovDegrees = fovDegrees;
@@ -89,15 +89,15 @@ class RenderingExtremesTest : public test::VulkanTest {
   };
 
   // Renders `frames` frames of a static view (sample sequences advancing) and returns the last.
-  static Frame renderScene(const render::SceneDesc& scene, const render::CameraDesc& camera,
+  static Frame renderScene(const scene::SceneDesc& scene, const scene::CameraDesc& camera,
                            uint32_t width, uint32_t height, uint32_t frames = 1,
-                           render::Tonemap tonemap = render::Tonemap::Aces, float exposure = 1.0f,
+                           scene::Tonemap tonemap = scene::Tonemap::Aces, float exposure = 1.0f,
                            bool referenceAccumulation = false) {
     render::RendererOptions options;
     options.width = width;
     options.height = height;
     render::Renderer renderer(context(), compiler(), scene, options);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = camera;
     frame.tonemap = tonemap;
     frame.exposure = exposure;
@@ -157,7 +157,7 @@ TEST_F(RenderingExtremesTest, soft_shadow_level_far_from_the_origin_denoises_a_m
     options.width = kWidth;
     options.height = kHeight;
     render::Renderer renderer(context(), compiler(), game::buildSceneDesc(walked), options);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = walked.camera;
     for (uint32_t i = 0; i < 8; ++i) {
       frame.frameIndex = i;
@@ -249,7 +249,7 @@ TEST_F(RenderingExtremesTest, light_intensities_from_1e_minus_6_to_1e6_stay_fini
       scaledLevel.environment.skyHorizon *= factor;
       scaledLevel.environment.ambient *= factor;
       const Frame exposed = renderScene(game::buildSceneDesc(scaledLevel), level.camera, 64, 36, 2,
-                                        render::Tonemap::Aces, 1.0f / factor);
+                                        scene::Tonemap::Aces, 1.0f / factor);
       const double share = differingShare(normal.image, exposed.image);
       std::printf("%s: all light x%g under exposure 1/%g: %.3f %% differ from x1 (limit 0.5 %%)\n",
                   name, factor, factor, 100.0 * share);
@@ -259,7 +259,7 @@ TEST_F(RenderingExtremesTest, light_intensities_from_1e_minus_6_to_1e6_stay_fini
 }
 
 // A white floor under a slab, lit from above-left; the camera looks straight down.
-render::SceneDesc slabOnFloor(const LightDesc& light) {
+scene::SceneDesc slabOnFloor(const LightDesc& light) {
   SceneBuilder builder;
   const uint32_t white = builder.material(diffuse(1.0f));
   builder.instance(builder.mesh(game::primitives::plane(40, 40)), white, glm::mat4(1.0f));
@@ -279,8 +279,8 @@ TEST_F(RenderingExtremesTest, area_lights_of_size_1mm_match_the_point_light_and_
   LightDesc point;
   point.position = centre;
   point.intensity = intensity;
-  const render::CameraDesc camera = lookingDown({0, 1.6f, 0}, 60.0f);
-  const Frame hard = renderScene(slabOnFloor(point), camera, 64, 64, 1, render::Tonemap::Identity);
+  const scene::CameraDesc camera = lookingDown({0, 1.6f, 0}, 60.0f);
+  const Frame hard = renderScene(slabOnFloor(point), camera, 64, 64, 1, scene::Tonemap::Identity);
   const float size = 1e-3f;
   for (const LightType type : {LightType::Sphere, LightType::Disk, LightType::Rectangle}) {
     LightDesc area = point;
@@ -296,7 +296,7 @@ TEST_F(RenderingExtremesTest, area_lights_of_size_1mm_match_the_point_light_and_
     render::RendererOptions options;
     options.width = options.height = 64;
     render::Renderer renderer(context(), compiler(), slabOnFloor(area), options);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = camera;
     frame.referenceAccumulation = true;
     for (uint32_t i = 0; i < 4; ++i) {
@@ -343,14 +343,14 @@ TEST_F(RenderingExtremesTest, huge_sphere_light_lights_evenly_and_its_shadow_is_
   sky.radius = 1000.0f;
   sky.position = glm::vec3(0.0f, 1003.0f, 0.0f);
   sky.intensity = 1.0f;  // radiance
-  const render::SceneDesc scene = slabOnFloor(sky);
+  const scene::SceneDesc scene = slabOnFloor(sky);
   render::RendererOptions options;
   options.width = 48;
   options.height = 48;
   render::Renderer renderer(context(), compiler(), scene, options);
-  render::FrameDesc frame;
+  scene::FrameDesc frame;
   frame.camera = lookingDown({0, 0.45f, 0}, 150.0f);  // under the slab, seeing the floor around
-  frame.tonemap = render::Tonemap::Identity;
+  frame.tonemap = scene::Tonemap::Identity;
   frame.referenceAccumulation = true;
   for (uint32_t i = 0; i < 256; ++i) {
     frame.frameIndex = i;
@@ -399,9 +399,9 @@ TEST_F(RenderingExtremesTest, grazing_sun_at_89_9_degrees_gives_no_acne_and_a_1m
     builder.instance(builder.mesh(game::primitives::box({0.001f, 0.5f, 40.0f})), white,
                      at(offset + glm::vec3(0.0f, 0.25f, 0.0f)));
     builder.light(sunAlong(travel, 1.0f));
-    const render::CameraDesc camera = lookingDown(offset + glm::vec3(0.0f, 2.0f, 0.0f), 60.0f);
+    const scene::CameraDesc camera = lookingDown(offset + glm::vec3(0.0f, 2.0f, 0.0f), 60.0f);
     const Frame frame =
-        renderScene(builder.scene, camera, 64, 36, 1, render::Tonemap::Identity, exposure);
+        renderScene(builder.scene, camera, 64, 36, 1, scene::Tonemap::Identity, exposure);
     const int litByte = expectedByte(0.5);
     size_t acne = 0, leaks = 0, litPixels = 0, shadowPixels = 0;
     for (uint32_t y = 0; y < 36; ++y) {
@@ -447,7 +447,7 @@ TEST_F(RenderingExtremesTest, fields_of_view_of_1_and_170_degrees_match_the_anal
   const float exposure = 0.25f;
   for (const double fov : {170.0, 60.0}) {
     const Frame frame = renderScene(builder.scene, lookingDown({0, 1, 0}, float(fov)), width,
-                                    height, 1, render::Tonemap::Identity, exposure);
+                                    height, 1, scene::Tonemap::Identity, exposure);
     int worst = 0;
     for (uint32_t y = 0; y < height; ++y) {
       for (uint32_t x = 0; x < width; ++x) {
@@ -471,7 +471,7 @@ TEST_F(RenderingExtremesTest, fields_of_view_of_1_and_170_degrees_match_the_anal
                     at({-0.305f - 0.5f, 0.3f, 0.0f}));  // right edge x = -0.305, top 0.31
   shadowed.light(sunAlong({1, -1, 0}, 1.0f));
   const Frame narrow = renderScene(shadowed.scene, lookingDown({0, 1, 0}, 1.0f), width, height, 1,
-                                   render::Tonemap::Identity);
+                                   scene::Tonemap::Identity);
   size_t misplaced = 0;
   for (uint32_t y = 0; y < height; ++y) {
     for (uint32_t x = 0; x < width; ++x) {
@@ -501,11 +501,11 @@ TEST_F(RenderingExtremesTest, camera_inside_a_closed_box_sees_its_inside_lit_onl
   builder.light(lamp);
   builder.scene.environment.ambient = glm::vec3(0.4f);
   builder.scene.environment.skyHorizon = glm::vec3(1.0f);
-  render::CameraDesc camera;
+  scene::CameraDesc camera;
   camera.position = glm::vec3(0.2f, 1.0f, 0.1f);
   camera.yawDegrees = 30.0f;
   camera.verticalFovDegrees = 120.0f;
-  const Frame frame = renderScene(builder.scene, camera, 48, 32, 1, render::Tonemap::Identity);
+  const Frame frame = renderScene(builder.scene, camera, 48, 32, 1, scene::Tonemap::Identity);
   const int expected = expectedByte(0.5 * 0.4);
   size_t wrong = 0;
   for (uint32_t i = 0; i < 48 * 32; ++i) {
@@ -525,7 +525,7 @@ TEST_F(RenderingExtremesTest, mirror_corridor_at_the_31_bounce_cap_renders_alike
   auto corridor = [](const glm::vec3& offset) {
     SceneBuilder builder;
     MaterialDesc silver;
-    silver.kind = render::MaterialKind::Mirror;
+    silver.kind = scene::MaterialKind::Mirror;
     silver.mirrorTint = glm::vec3(0.95f);
     const uint32_t mirror = builder.material(silver);
     const uint32_t wall = builder.mesh(game::primitives::box({0.25f, 4.0f, 400.0f}));
@@ -539,7 +539,7 @@ TEST_F(RenderingExtremesTest, mirror_corridor_at_the_31_bounce_cap_renders_alike
     builder.scene.maxMirrorBounces = 31;
     return builder.scene;
   };
-  render::CameraDesc camera;
+  scene::CameraDesc camera;
   camera.yawDegrees = 80.0f;  // mostly across the corridor, so rays bounce many times
   camera.pitchDegrees = -3.0f;
   camera.position = glm::vec3(0.0f, 1.75f, 0.0f);
@@ -572,7 +572,7 @@ TEST_F(RenderingExtremesTest, mirror_corridor_at_the_31_bounce_cap_renders_alike
 // loader drops degenerate triangles and computes missing normals before this point:
 // tests/gltf_model_test.cpp.)
 TEST_F(RenderingExtremesTest, degenerate_triangles_duplicates_and_zero_normals_render_like_clean) {
-  auto scene = [](const render::MeshData& floor) {
+  auto scene = [](const scene::MeshData& floor) {
     SceneBuilder builder;
     const uint32_t paint = builder.material(diffuse(0.8f));
     builder.instance(builder.mesh(floor), paint, glm::mat4(1.0f));
@@ -582,9 +582,9 @@ TEST_F(RenderingExtremesTest, degenerate_triangles_duplicates_and_zero_normals_r
     builder.scene.environment.ambient = glm::vec3(0.1f);
     return builder.scene;
   };
-  const render::MeshData clean = game::primitives::plane(10, 10);
-  render::MeshData messy = clean;
-  for (render::Vertex& vertex : messy.vertices) vertex.normal = glm::vec3(0.0f);
+  const scene::MeshData clean = game::primitives::plane(10, 10);
+  scene::MeshData messy = clean;
+  for (scene::Vertex& vertex : messy.vertices) vertex.normal = glm::vec3(0.0f);
   const uint32_t base = uint32_t(messy.vertices.size());
   for (const uint32_t index : clean.indices) messy.vertices.push_back(messy.vertices[index]);
   for (uint32_t i = 0; i < clean.indices.size(); ++i) messy.indices.push_back(base + i);
@@ -592,9 +592,9 @@ TEST_F(RenderingExtremesTest, degenerate_triangles_duplicates_and_zero_normals_r
   messy.vertices.push_back({0.5f * (clean.vertices[0].position + clean.vertices[1].position)});
   const uint32_t onEdge = uint32_t(messy.vertices.size() - 1);
   messy.indices.insert(messy.indices.end(), {0, 0, 2, 0, 1, onEdge, 3, 3, 3});
-  const render::CameraDesc camera = lookingDown({0.1f, 1.5f, 0.2f}, 70.0f);
-  const Frame expected = renderScene(scene(clean), camera, 64, 64, 1, render::Tonemap::Identity);
-  const Frame actual = renderScene(scene(messy), camera, 64, 64, 1, render::Tonemap::Identity);
+  const scene::CameraDesc camera = lookingDown({0.1f, 1.5f, 0.2f}, 70.0f);
+  const Frame expected = renderScene(scene(clean), camera, 64, 64, 1, scene::Tonemap::Identity);
+  const Frame actual = renderScene(scene(messy), camera, 64, 64, 1, scene::Tonemap::Identity);
   const render::ImageDifference difference = render::compareImages(expected.image, actual.image, 0);
   std::printf("degenerate, duplicated, normal-less floor: %llu pixels differ at all (limit 0)\n",
               static_cast<unsigned long long>(difference.differingPixels));

@@ -1,19 +1,19 @@
 #pragma once
-// Builds render::SceneDesc in code for image tests: meshes, materials and instances by index.
+// Builds scene::SceneDesc in code for image tests: meshes, materials and instances by index.
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace test {
 
 struct SceneBuilder {
-  render::SceneDesc scene;
+  scene::SceneDesc scene;
 
-  uint32_t mesh(render::MeshData data) {
+  uint32_t mesh(scene::MeshData data) {
     scene.meshes.push_back(std::move(data));
     return uint32_t(scene.meshes.size() - 1);
   }
-  uint32_t material(const render::MaterialDesc& material) {
+  uint32_t material(const scene::MaterialDesc& material) {
     scene.materials.push_back(material);
     return uint32_t(scene.materials.size() - 1);
   }
@@ -22,7 +22,7 @@ struct SceneBuilder {
     scene.instances.push_back({mesh, material, transform, castsShadow});
     return uint32_t(scene.instances.size() - 1);
   }
-  void light(const render::LightDesc& light) { scene.lights.push_back(light); }
+  void light(const scene::LightDesc& light) { scene.lights.push_back(light); }
 };
 
 inline glm::mat4 at(const glm::vec3& position) {

@@ -17,9 +17,9 @@ using test::SceneBuilder;
 constexpr uint32_t kSize = 48;
 
 // A white floor seen from above, a slab 0.5 m up, and a light above it.
-render::SceneDesc slabScene(const render::LightDesc& light, glm::vec3 slabAt = {0, 0.5f, 0}) {
+scene::SceneDesc slabScene(const scene::LightDesc& light, glm::vec3 slabAt = {0, 0.5f, 0}) {
   SceneBuilder builder;
-  render::MaterialDesc white;
+  scene::MaterialDesc white;
   white.baseColor = glm::vec3(1.0f);
   const uint32_t paint = builder.material(white);
   builder.instance(builder.mesh(game::primitives::plane(20, 20)), paint, glm::mat4(1.0f));
@@ -28,17 +28,17 @@ render::SceneDesc slabScene(const render::LightDesc& light, glm::vec3 slabAt = {
   return builder.scene;
 }
 
-render::LightDesc sphereLight(float radius) {
-  render::LightDesc light;
-  light.type = render::LightType::Sphere;
+scene::LightDesc sphereLight(float radius) {
+  scene::LightDesc light;
+  light.type = scene::LightType::Sphere;
   light.position = glm::vec3(0.3f, 2.0f, 0.0f);
   light.radius = radius;
   light.intensity = 10.0f;
   return light;
 }
 
-render::CameraDesc topCamera() {
-  render::CameraDesc camera;
+scene::CameraDesc topCamera() {
+  scene::CameraDesc camera;
   camera.position = glm::vec3(0, 1.6f, 0);
   camera.pitchDegrees = -90.0f;
   camera.verticalFovDegrees = 70.0f;
@@ -59,7 +59,7 @@ double rmse(const std::vector<float>& a, const std::vector<float>& b) {
 
 class SoftShadowTest : public test::VulkanTest {
  protected:
-  static std::unique_ptr<render::Renderer> makeRenderer(const render::SceneDesc& scene,
+  static std::unique_ptr<render::Renderer> makeRenderer(const scene::SceneDesc& scene,
                                                         bool allFeatures = false) {
     render::RendererOptions options;
     options.width = kSize;
@@ -68,17 +68,17 @@ class SoftShadowTest : public test::VulkanTest {
     return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
   }
 
-  static render::FrameDesc frameAt(uint32_t index, bool reference = false) {
-    render::FrameDesc frame;
+  static scene::FrameDesc frameAt(uint32_t index, bool reference = false) {
+    scene::FrameDesc frame;
     frame.camera = topCamera();
-    frame.tonemap = render::Tonemap::Identity;
+    frame.tonemap = scene::Tonemap::Identity;
     frame.frameIndex = index;
     frame.referenceAccumulation = reference;
     return frame;
   }
 
   // Raw visibility averaged over `samples` frames starting at `firstFrame` (no filtering).
-  static std::vector<float> accumulate(const render::SceneDesc& scene, uint32_t samples,
+  static std::vector<float> accumulate(const scene::SceneDesc& scene, uint32_t samples,
                                        uint32_t firstFrame) {
     auto renderer = makeRenderer(scene);
     for (uint32_t i = 0; i < samples; ++i)
@@ -88,8 +88,8 @@ class SoftShadowTest : public test::VulkanTest {
 };
 
 TEST_F(SoftShadowTest, zero_size_light_gives_exact_hard_shadow_through_the_soft_path) {
-  render::LightDesc sun;
-  sun.type = render::LightType::Directional;
+  scene::LightDesc sun;
+  sun.type = scene::LightType::Directional;
   sun.direction = glm::vec3(1, -1, 0);  // the slab's shadow lands at x in [0.2, 0.8]
   sun.intensity = 1.0f;
   auto renderer = makeRenderer(slabScene(sun), /*allFeatures=*/true);
@@ -114,7 +114,7 @@ TEST_F(SoftShadowTest, zero_size_light_gives_exact_hard_shadow_through_the_soft_
 }
 
 TEST_F(SoftShadowTest, denoised_output_stays_in_range_and_is_deterministic) {
-  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   std::vector<uint8_t> first;
   for (int run = 0; run < 2; ++run) {
     auto renderer = makeRenderer(scene);
@@ -161,7 +161,7 @@ TEST_F(SoftShadowTest, long_history_of_100000_frames_still_averages_exactly) {
 }
 
 TEST_F(SoftShadowTest, disoccluded_pixels_restart_their_history) {
-  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   auto renderer = makeRenderer(scene);
   for (uint32_t frame = 0; frame < 10; ++frame) renderer->renderFrame(frameAt(frame));
   const uint32_t centre = (kSize / 2) * kSize + kSize / 2;
@@ -241,20 +241,20 @@ TEST_F(SoftShadowTest, camera_teleport_or_explicit_cut_resets_the_history) {
   for (uint32_t frame = 0; frame < 5; ++frame) renderer->renderFrame(frameAt(frame));
   const uint32_t corner = 0;
   EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 5.0f);
-  render::FrameDesc cut = frameAt(5);
+  scene::FrameDesc cut = frameAt(5);
   cut.resetHistory = true;
   renderer->renderFrame(cut);
   EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 1.0f);
   renderer->renderFrame(frameAt(6));
   EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 2.0f);
-  render::FrameDesc teleport = frameAt(7);
+  scene::FrameDesc teleport = frameAt(7);
   teleport.camera.position += glm::vec3(3.0f, 0.0f, 0.0f);  // more than the 1 m cut distance
   renderer->renderFrame(teleport);
   EXPECT_EQ(renderer->readDenoiser(DenoiserImage::Moments)[corner].z, 1.0f);
 }
 
 TEST_F(SoftShadowTest, first_frame_denoised_error_is_at_most_half_the_raw_error) {
-  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   const auto reference = accumulate(scene, 512, 100000);
   auto renderer = makeRenderer(scene);
   renderer->renderFrame(frameAt(0));
@@ -270,7 +270,7 @@ TEST_F(SoftShadowTest, first_frame_denoised_error_is_at_most_half_the_raw_error)
 // feeding its blur back, so 32 frames beat 8 clearly and stay within 1.5x of 32 raw samples
 // averaged (before that change: 0.033 after 8, 0.045 after 32, against 0.0074 raw).
 TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_32_static_frames) {
-  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   const auto reference = accumulate(scene, 512, 100000);
   auto renderer = makeRenderer(scene);
   double after8 = 0.0, after32 = 0.0;
@@ -288,7 +288,7 @@ TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_32_static_frames) {
 }
 
 TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
-  const render::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   // The reference uses a distant stretch of the sequence, independent of the samples tested.
   const auto reference = accumulate(scene, 1024, 1u << 20);
   std::vector<double> logN, logError;

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/scene_desc.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace test {
 
@@ -36,7 +36,7 @@ inline void writeFile(const std::filesystem::path& path, const std::string& cont
 }
 
 // One RGBA texel of a decoded texture.
-inline std::array<uint8_t, 4> texel(const render::TextureDesc& texture, uint32_t x, uint32_t y) {
+inline std::array<uint8_t, 4> texel(const scene::TextureDesc& texture, uint32_t x, uint32_t y) {
   const std::size_t at = (std::size_t{y} * texture.width + x) * 4;
   return {texture.rgba.at(at), texture.rgba.at(at + 1), texture.rgba.at(at + 2),
           texture.rgba.at(at + 3)};

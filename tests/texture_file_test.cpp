@@ -80,7 +80,7 @@ class TextureFileTest : public test::TempDirTest {};
 
 TEST(TextureFile, crate_colour_png_decodes_to_exact_rgba8) {
   const fs::path file = kAssets / "crate_color.png";
-  const render::TextureDesc texture = game::loadTextureFile(file, true);
+  const scene::TextureDesc texture = game::loadTextureFile(file, true);
   EXPECT_EQ(texture.name, file.string());
   EXPECT_EQ(texture.width, 64u);
   EXPECT_EQ(texture.height, 64u);
@@ -95,7 +95,7 @@ TEST(TextureFile, crate_colour_png_decodes_to_exact_rgba8) {
 }
 
 TEST(TextureFile, normal_map_keeps_its_linear_flag_and_values) {
-  const render::TextureDesc texture = game::loadTextureFile(kAssets / "crate_normal.png", false);
+  const scene::TextureDesc texture = game::loadTextureFile(kAssets / "crate_normal.png", false);
   EXPECT_FALSE(texture.srgb);
   EXPECT_EQ(texture.width, 32u);
   EXPECT_EQ(texture.height, 32u);
@@ -107,7 +107,7 @@ TEST(TextureFile, normal_map_keeps_its_linear_flag_and_values) {
 TEST_F(TextureFileTest, grey_and_rgba_pngs_are_expanded_to_rgba) {
   const std::array<uint8_t, 6> grey = {0, 50, 100, 150, 200, 255};  // 3x2
   ASSERT_TRUE(stbi_write_png((root_ / "grey.png").c_str(), 3, 2, 1, grey.data(), 3));
-  const render::TextureDesc greyTexture = game::loadTextureFile(root_ / "grey.png", true);
+  const scene::TextureDesc greyTexture = game::loadTextureFile(root_ / "grey.png", true);
   EXPECT_EQ(greyTexture.width, 3u);
   EXPECT_EQ(greyTexture.height, 2u);
   EXPECT_EQ(texel(greyTexture, 0, 0), (std::array<uint8_t, 4>{0, 0, 0, 255}));
@@ -115,7 +115,7 @@ TEST_F(TextureFileTest, grey_and_rgba_pngs_are_expanded_to_rgba) {
 
   const std::array<uint8_t, 8> rgba = {1, 2, 3, 4, 250, 251, 252, 0};  // 1x2, rows top first
   ASSERT_TRUE(stbi_write_png((root_ / "rgba.png").c_str(), 1, 2, 4, rgba.data(), 4));
-  const render::TextureDesc rgbaTexture = game::loadTextureFile(root_ / "rgba.png", false);
+  const scene::TextureDesc rgbaTexture = game::loadTextureFile(root_ / "rgba.png", false);
   EXPECT_EQ(rgbaTexture.rgba, std::vector<uint8_t>(rgba.begin(), rgba.end()));
 }
 
@@ -125,7 +125,7 @@ TEST_F(TextureFileTest, jpeg_decodes) {
     pixels[i] = 200, pixels[i + 1] = 100, pixels[i + 2] = 50;
   }
   ASSERT_TRUE(stbi_write_jpg((root_ / "flat.jpg").c_str(), 16, 8, 3, pixels.data(), 100));
-  const render::TextureDesc texture = game::loadTextureFile(root_ / "flat.jpg", true);
+  const scene::TextureDesc texture = game::loadTextureFile(root_ / "flat.jpg", true);
   EXPECT_EQ(texture.width, 16u);
   EXPECT_EQ(texture.height, 8u);
   const auto corner = texel(texture, 15, 7);

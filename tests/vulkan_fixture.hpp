@@ -45,21 +45,21 @@ class VulkanTest : public ::testing::Test {
 
   // Renders a level (JSON text) at the given size and returns the sRGB bytes.
   static render::Rgba8Image renderLevelText(const std::string& json, uint32_t width,
-                                            uint32_t height, render::Tonemap tonemap,
+                                            uint32_t height, scene::Tonemap tonemap,
                                             float exposure = 1.0f) {
     const game::Level level = game::parseLevel(json, sourceDir() / "tests" / "inline_level.json");
     return renderLevel(level, width, height, tonemap, exposure);
   }
 
   static render::Rgba8Image renderLevel(const game::Level& level, uint32_t width, uint32_t height,
-                                        render::Tonemap tonemap, float exposure = 1.0f,
+                                        scene::Tonemap tonemap, float exposure = 1.0f,
                                         uint32_t rowGroups = 8) {
     render::RendererOptions options;
     options.width = width;
     options.height = height;
     options.rowGroups = rowGroups;
     render::Renderer renderer(*context_, *compiler_, game::buildSceneDesc(level), options);
-    render::FrameDesc frame;
+    scene::FrameDesc frame;
     frame.camera = level.camera;
     frame.tonemap = tonemap;
     frame.exposure = exposure;

@@ -4,7 +4,7 @@
 
 #include <glm/glm.hpp>
 
-namespace render {
+namespace scene {
 
 // The exact sRGB EOTF: encoded value in [0, 1] -> linear.
 inline float srgbToLinear(float encoded) {
@@ -26,4 +26,4 @@ inline glm::vec3 linearToSrgb(const glm::vec3& linear) {
   return {linearToSrgb(linear.r), linearToSrgb(linear.g), linearToSrgb(linear.b)};
 }
 
-}  // namespace render
+}  // namespace scene

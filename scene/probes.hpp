@@ -1,12 +1,14 @@
 #pragma once
-// What the ray-gen shaders measure for the game's rules (render side of game/probes.hpp):
+// What the game asks the ray-gen shaders to measure for its rules, and what they count back:
 // focus regions counted per pixel, and exposure sample points traced towards a light.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
-namespace render {
+namespace scene {
 
 struct FocusProbeDesc {
   uint32_t instance = 0;         // the scene instance that must be seen
@@ -54,6 +56,13 @@ struct PixelBox {
   uint32_t x0, y0, x1, y1;  // x1, y1 one past
   uint32_t pixels() const { return (x1 - x0) * (y1 - y0); }
 };
-PixelBox focusPixelBox(glm::vec2 region, uint32_t width, uint32_t height);
+inline PixelBox focusPixelBox(glm::vec2 region, uint32_t width, uint32_t height) {
+  auto span = [](float fraction, uint32_t size) {
+    return std::clamp(uint32_t(std::lround(double(fraction) * size)), 1u, size);
+  };
+  const uint32_t boxWidth = span(region.x, width), boxHeight = span(region.y, height);
+  const uint32_t x0 = (width - boxWidth) / 2, y0 = (height - boxHeight) / 2;
+  return {x0, y0, x0 + boxWidth, y0 + boxHeight};
+}
 
-}  // namespace render
+}  // namespace scene

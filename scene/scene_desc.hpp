@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-namespace render {
+namespace scene {
 
 struct Vertex {
   glm::vec3 position{0.0f};
@@ -117,4 +117,4 @@ struct FrameDesc {
   bool referenceAccumulation = false;
 };
 
-}  // namespace render
+}  // namespace scene

@@ -1,0 +1,73 @@
+#include "game/json_document.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace game {
+
+namespace {
+
+// Accepts every value and keeps the first error with the byte where it was found.
+struct FirstErrorSax : nlohmann::json_sax<nlohmann::json> {
+  using Base = nlohmann::json_sax<nlohmann::json>;
+  JsonSyntaxError error;
+
+  bool null() override { return true; }
+  bool boolean(bool) override { return true; }
+  bool number_integer(Base::number_integer_t) override { return true; }
+  bool number_unsigned(Base::number_unsigned_t) override { return true; }
+  bool number_float(Base::number_float_t, const Base::string_t&) override { return true; }
+  bool string(Base::string_t&) override { return true; }
+  bool binary(Base::binary_t&) override { return true; }
+  bool start_object(std::size_t) override { return true; }
+  bool key(Base::string_t&) override { return true; }
+  bool end_object() override { return true; }
+  bool start_array(std::size_t) override { return true; }
+  bool end_array() override { return true; }
+
+  bool parse_error(std::size_t position, const std::string& lastToken,
+                   const nlohmann::detail::exception& exception) override {
+    error.bytesRead = position;
+    error.lastToken = lastToken;
+    // The error comes after the token was read.
+    error.tokenOffset = position >= lastToken.size() ? position - lastToken.size() : 0;
+    error.numberTooLarge =
+        dynamic_cast<const nlohmann::detail::parse_error*>(&exception) == nullptr;
+    // what() reads "[json.exception.parse_error.101] parse error at line 1, column 7: <reason>".
+    std::string reason = exception.what();
+    if (const std::size_t prefixEnd = reason.find("] "); prefixEnd != std::string::npos) {
+      reason.erase(0, prefixEnd + 2);
+    }
+    if (reason.rfind("parse error", 0) == 0) {
+      if (const std::size_t colon = reason.find(": "); colon != std::string::npos) {
+        reason.erase(0, colon + 2);
+      }
+    }
+    error.reason = std::move(reason);
+    return false;
+  }
+};
+
+}  // namespace
+
+JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
+  FirstErrorSax sax;
+  nlohmann::json::sax_parse(text, &sax);
+  return sax.error;
+}
+
+std::string placeInFile(const std::filesystem::path& file, SourcePosition at,
+                        const std::string& path) {
+  return file.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
+         (path.empty() ? "" : path + ": ");
+}
+
+std::string readAtMostPastLimit(std::istream& stream, std::size_t maxBytes) {
+  std::string text;
+  char chunk[1 << 14];
+  while (text.size() <= maxBytes && (stream.read(chunk, sizeof chunk) || stream.gcount() > 0)) {
+    text.append(chunk, static_cast<std::size_t>(stream.gcount()));
+  }
+  return text;
+}
+
+}  // namespace game

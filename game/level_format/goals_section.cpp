@@ -1,0 +1,82 @@
+#include "game/level_format/sections.hpp"
+
+// The "goal" section: what wins the level.
+namespace game::level_format {
+
+Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::string& pointer,
+              int depth) {
+  static const std::vector<std::string> kTypes{"focus", "lit", "reach", "all", "any"};
+  const std::size_t type = reader.readType(goal, pointer, kTypes);
+  const std::string what = withArticle(kTypes[type]) + " goal";
+  Goal result;
+  result.type = static_cast<Goal::Type>(type);
+  switch (result.type) {
+    case Goal::Type::Focus:
+      reader.checkKeys(goal, pointer,
+                       {"type", "orb", "region", "coverage", "rise_per_second", "fall_per_second"},
+                       {"orb"}, what);
+      result.entity =
+          reader.readReference(goal["orb"], childPointer(pointer, "orb"), IdKind::Entity);
+      if (goal.contains("region")) {
+        result.region =
+            reader.readVec2(goal["region"], childPointer(pointer, "region"), kUnitFraction,
+                            "an array of 2 numbers [width, height] in (0, 1]");
+      }
+      result.coverage =
+          reader.readOptionalNumber(goal, "coverage", pointer, kUnitFraction, result.coverage);
+      result.risePerSecond = reader.readOptionalNumber(goal, "rise_per_second", pointer,
+                                                       kPositiveNumber, result.risePerSecond);
+      result.fallPerSecond = reader.readOptionalNumber(goal, "fall_per_second", pointer,
+                                                       kNonNegativeNumber, result.fallPerSecond);
+      break;
+    case Goal::Type::Lit:
+      reader.checkKeys(goal, pointer, {"type", "sensor", "light", "threshold", "hold_seconds"},
+                       {"sensor", "light"}, what);
+      result.entity =
+          reader.readReference(goal["sensor"], childPointer(pointer, "sensor"), IdKind::Entity);
+      result.light =
+          reader.readReference(goal["light"], childPointer(pointer, "light"), IdKind::Light);
+      result.threshold =
+          reader.readOptionalNumber(goal, "threshold", pointer, kUnitFraction, result.threshold);
+      result.holdSeconds = reader.readOptionalNumber(goal, "hold_seconds", pointer,
+                                                     kNonNegativeNumber, result.holdSeconds);
+      break;
+    case Goal::Type::Reach: {
+      reader.checkKeys(goal, pointer, {"type", "min", "max"}, {"min", "max"}, what);
+      result.min = reader.readVec3(goal["min"], childPointer(pointer, "min"), kCoordinate);
+      const std::string maxPointer = childPointer(pointer, "max");
+      result.max = reader.readVec3(goal["max"], maxPointer, kCoordinate);
+      for (glm::length_t axis = 0; axis < 3; ++axis) {
+        if (!(result.max[axis] > result.min[axis])) {
+          const auto index = static_cast<std::size_t>(axis);
+          reader.failValue(childPointer(maxPointer, index),
+                           "expected a number > min[" + std::to_string(index) + "] (" +
+                               formatNumber(result.min[axis]) + "), got " +
+                               describeValue(goal["max"][index]));
+        }
+      }
+      break;
+    }
+    case Goal::Type::All:
+    case Goal::Type::Any: {
+      reader.checkKeys(goal, pointer, {"type", "of"}, {"of"}, what);
+      const OrderedJson& children = goal["of"];
+      const std::string ofPointer = childPointer(pointer, "of");
+      if (!children.is_array() || children.empty() || children.size() > kMaxGoalChildren) {
+        reader.expected(children, ofPointer, "an array of 1 to 16 goals");
+      }
+      if (depth >= kMaxGoalDepth) {
+        reader.failValue(ofPointer, "goals nest more than " + std::to_string(kMaxGoalDepth) +
+                                        " deep, the limit");
+      }
+      for (std::size_t i = 0; i < children.size(); ++i) {
+        result.children.push_back(
+            readGoal(reader, children[i], childPointer(ofPointer, i), depth + 1));
+      }
+      break;
+    }
+  }
+  return result;
+}
+
+}  // namespace game::level_format
