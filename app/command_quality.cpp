@@ -12,9 +12,9 @@
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
-#include "scene/color.hpp"
 #include "render/image_metrics.hpp"
 #include "render/renderer.hpp"
+#include "scene/color.hpp"
 
 namespace app {
 namespace fs = std::filesystem;

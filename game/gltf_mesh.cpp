@@ -784,7 +784,7 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
 }
 
 scene::MeshData loadGltfMesh(const fs::path& file, const fs::path& allowedRoot,
-                              const std::string& meshName) {
+                             const std::string& meshName) {
   GltfSelection selection;
   selection.mesh = meshName;
   return loadGltfModel(file, allowedRoot, selection).mesh;

@@ -16,7 +16,7 @@ struct GltfMaterial {
   glm::vec3 baseColor{1.0f};  // linear (glTF factors are linear)
   float specular = 0.04f;     // 0.04 + 0.96 * metallic
   float roughness = 1.0f;
-  glm::vec3 emissive{0.0f};                          // linear
+  glm::vec3 emissive{0.0f};                         // linear
   std::optional<scene::TextureDesc> colorTexture;   // srgb = true
   std::optional<scene::TextureDesc> normalTexture;  // srgb = false
 };
@@ -46,7 +46,7 @@ GltfModel loadGltfModel(const std::filesystem::path& file, const std::filesystem
 
 // Transitional: the mesh alone (meshName selects a mesh, as GltfSelection::mesh).
 scene::MeshData loadGltfMesh(const std::filesystem::path& file,
-                              const std::filesystem::path& allowedRoot,
-                              const std::string& meshName = {});
+                             const std::filesystem::path& allowedRoot,
+                             const std::string& meshName = {});
 
 }  // namespace game

@@ -87,7 +87,7 @@ struct Level {
   std::vector<std::string> materialIds;  // parallel to materials
   std::vector<scene::MaterialDesc> materials;
   std::vector<scene::TextureDesc> textures;  // referenced by materials
-  std::vector<std::string> meshIds;           // parallel to meshes
+  std::vector<std::string> meshIds;          // parallel to meshes
   std::vector<scene::MeshData> meshes;
   std::vector<Entity> entities;
   std::vector<std::string> lightIds;  // parallel to lights

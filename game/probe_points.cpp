@@ -52,8 +52,8 @@ std::vector<SurfaceSample> surfaceSamples(const scene::MeshData& mesh, uint32_t 
 }
 
 std::vector<scene::ExposurePoint> sensorExposurePoints(const std::vector<SurfaceSample>& samples,
-                                                        const glm::mat4& objectToWorld,
-                                                        const scene::LightDesc& light) {
+                                                       const glm::mat4& objectToWorld,
+                                                       const scene::LightDesc& light) {
   const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(objectToWorld)));
   std::vector<scene::ExposurePoint> points;
   for (const SurfaceSample& sample : samples) {
@@ -66,7 +66,7 @@ std::vector<scene::ExposurePoint> sensorExposurePoints(const std::vector<Surface
 }
 
 std::vector<scene::ExposurePoint> playerExposurePoints(const glm::vec3& feet,
-                                                        const scene::LightDesc& light) {
+                                                       const scene::LightDesc& light) {
   const glm::vec3 centre = feet + glm::vec3(0.0f, 0.9f, 0.0f);
   glm::vec3 toLight = towardsLight(light, centre);
   // Across the line to the light: horizontal, unless the light is straight above or below.

@@ -23,13 +23,13 @@ std::vector<SurfaceSample> surfaceSamples(const scene::MeshData& mesh, uint32_t 
 // lifted 1 mm off the surface. A sensor's exposure is the lit share of its side facing the
 // light; a sensor facing away has no points and reads 0.
 std::vector<scene::ExposurePoint> sensorExposurePoints(const std::vector<SurfaceSample>& samples,
-                                                        const glm::mat4& objectToWorld,
-                                                        const scene::LightDesc& light);
+                                                       const glm::mat4& objectToWorld,
+                                                       const scene::LightDesc& light);
 
 // 64 points over the player's body (a 0.3 m radius, 1.8 m capsule standing on `feet`): 16
 // heights by 4 places across the line to the light; two-sided, so the player's exposure is
 // the share of the body the light can see.
 std::vector<scene::ExposurePoint> playerExposurePoints(const glm::vec3& feet,
-                                                        const scene::LightDesc& light);
+                                                       const scene::LightDesc& light);
 
 }  // namespace game

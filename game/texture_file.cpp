@@ -45,7 +45,7 @@ struct StbFree {
 }  // namespace
 
 scene::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
-                                  bool srgb) {
+                                 bool srgb) {
   if (bytes.empty()) fail(name, "image file is empty");
   if (bytes.size() > kMaxTextureFileBytes) {
     fail(name, "image file is larger than the 64 MiB limit");

@@ -17,6 +17,6 @@ scene::TextureDesc loadTextureFile(const std::filesystem::path& file, bool srgb)
 
 // Same, from bytes already in memory (e.g. an image embedded in a .glb); `name` names it.
 scene::TextureDesc decodeTexture(std::span<const uint8_t> bytes, const std::string& name,
-                                  bool srgb);
+                                 bool srgb);
 
 }  // namespace game

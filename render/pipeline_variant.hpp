@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "scene/scene_desc.hpp"
 #include "render/shader_compiler.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace render {
 

@@ -6,7 +6,8 @@
 
 namespace render {
 
-Texture::Texture(const Context& context, const scene::TextureDesc& desc) : device_(context.device()) {
+Texture::Texture(const Context& context, const scene::TextureDesc& desc)
+    : device_(context.device()) {
   if (desc.width == 0 || desc.height == 0 ||
       desc.rgba.size() != size_t(desc.width) * desc.height * 4) {
     throw RenderError("texture '" + desc.name + "' has no pixels or a wrong size");

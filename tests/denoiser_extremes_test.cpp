@@ -79,7 +79,7 @@ class DenoiserExtremesTest : public test::VulkanTest {
     return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
   }
   static scene::FrameDesc frameAt(uint32_t index, const scene::CameraDesc& camera = topCamera(),
-                                   bool reference = false) {
+                                  bool reference = false) {
     scene::FrameDesc frame;
     frame.camera = camera;
     frame.tonemap = scene::Tonemap::Identity;

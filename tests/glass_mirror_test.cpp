@@ -7,8 +7,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "game/primitives.hpp"
-#include "scene/color.hpp"
 #include "render/pipeline_variant.hpp"
+#include "scene/color.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 

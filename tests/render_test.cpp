@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "scene/color.hpp"
 #include "render/vulkan_error.hpp"
+#include "scene/color.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
