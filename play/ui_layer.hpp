@@ -11,7 +11,7 @@ namespace render {
 class Context;
 }
 
-namespace app {
+namespace play {
 
 class UiLayer {
  public:
@@ -38,4 +38,4 @@ class UiLayer {
   bool vulkanBackend_ = false;
 };
 
-}  // namespace app
+}  // namespace play

@@ -1,4 +1,4 @@
-#include "app/ui_layer.hpp"
+#include "play/ui_layer.hpp"
 
 #include <array>
 #include <filesystem>
@@ -11,7 +11,7 @@
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
-namespace app {
+namespace play {
 namespace {
 
 // A clear sans-serif where Debian has one (fonts-dejavu-core); ImGui's built-in bitmap font,
@@ -107,4 +107,4 @@ render::OverlayDraw UiLayer::endFrame() {
       [drawData](VkCommandBuffer commands) { ImGui_ImplVulkan_RenderDrawData(drawData, commands); };
 }
 
-}  // namespace app
+}  // namespace play

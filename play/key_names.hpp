@@ -3,11 +3,11 @@
 // GLFW_KEY_ names without the prefix; game::isKeyName checks them).
 #include <string>
 
-namespace app {
+namespace play {
 
 // GLFW_KEY_UNKNOWN (-1) for a name that is not a key.
 int glfwKeyFromName(const std::string& name);
 // "" for a key without a name in settings.json.
 std::string keyNameFromGlfw(int key);
 
-}  // namespace app
+}  // namespace play

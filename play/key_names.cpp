@@ -1,10 +1,10 @@
-#include "app/key_names.hpp"
+#include "play/key_names.hpp"
 
 #include <utility>
 
 #include <GLFW/glfw3.h>
 
-namespace app {
+namespace play {
 namespace {
 
 // Every named key game::isKeyName accepts besides letters, digits and F1..F25.
@@ -98,4 +98,4 @@ std::string keyNameFromGlfw(int key) {
   return "";
 }
 
-}  // namespace app
+}  // namespace play

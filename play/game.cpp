@@ -1,0 +1,203 @@
+#include "play/game.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <GLFW/glfw3.h>
+
+#include "game/level_loader.hpp"
+#include "play/hud.hpp"
+#include "play/recording.hpp"
+#include "render/context.hpp"
+#include "render/presenter.hpp"
+
+namespace play {
+namespace fs = std::filesystem;
+
+namespace {
+constexpr double kTitleSeconds = 0.5;  // how often the title's fps and progress refresh
+}  // namespace
+
+Game::Game(const PlayOptions& options, const game::Settings& settings, std::vector<fs::path> levels,
+           GLFWwindow* window, const render::Context& context, render::ShaderCompiler& compiler,
+           render::Presenter& presenter)
+    : options_(options),
+      settings_(settings),
+      savedSettings_(settings),
+      window_(window),
+      context_(context),
+      compiler_(compiler),
+      presenter_(presenter),
+      levels_(std::move(levels)),
+      shownSwapchain_{presenter.extent(), presenter.presentMode()} {
+  installEventCallbacks(window_, events_);
+  keyCodes_ = keyCodesFor(settings_);
+  float scaleX = 1.0f, scaleY = 1.0f;
+  glfwGetWindowContentScale(window_, &scaleX, &scaleY);
+  // After the callbacks above: ImGui's GLFW backend calls them after its own.
+  ui_ = std::make_unique<UiLayer>(context_, window_, presenter_, std::max(1.0f, scaleY));
+  menu_.levelNames = levelDisplayNames(levels_);
+}
+
+int Game::run(const fs::path& firstLevel) {
+  load(firstLevel);
+  if (options_.record)
+    played_.recording = startRecording(*options_.record, played_.file, played_.renderWidth,
+                                       played_.renderHeight, settings_.fieldOfViewDegrees);
+  setPaused(false);
+  const double started = glfwGetTime();
+  double titleAt = started;
+  uint32_t framesSinceTitle = 0;
+  while (!glfwWindowShouldClose(window_)) {
+    if (paused_)
+      glfwWaitEventsTimeout(0.05);  // nothing moves: no need to spin
+    else
+      glfwPollEvents();
+    handlePresses();
+    const double now = glfwGetTime();
+    const double elapsed = now - played_.lastFrameAt;
+    played_.lastFrameAt = now;
+    bool quitting = false;
+    if (!paused_) {
+      gatherMouseLook(window_, look_, settings_);
+      runTicks(elapsed);
+      quitting = options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks;
+      if (!quitting && advanceAfterOutcome(played_, now, levelSetup())) updateTitle(0.0);
+    }
+    if (quitting && options_.capture) presenter_.captureNextPresent();
+    played_.simulation->renderPicture();
+    const std::vector<render::HudRect> hud =
+        options_.hudOff ? std::vector<render::HudRect>{} : hudRects(*played_.simulation);
+    ui_->beginFrame();
+    if (!options_.hudOff) drawScreenText(played_, presenter_, fps_, authorOverlay_);
+    if (paused_) drawPauseMenu(menu_, played_, levels_, settings_, keyCodes_, presenter_);
+    const render::OverlayDraw overlay = ui_->endFrame();
+    if (presenter_.present(played_.simulation->renderer(), hud, overlay)) ++framesShown_;
+    reportSwapchainChange(presenter_, shownSwapchain_);
+    if (screenshotRequested_ && !quitting && saveScreenshot(presenter_))
+      screenshotRequested_ = false;
+    if (quitting) {
+      if (options_.capture &&
+          !writeCapture(presenter_, *options_.capture, played_.simulation->tick()))
+        captureFailed_ = true;
+      std::printf("quit after %llu ticks, %llu frames shown (%.1f fps)\n",
+                  static_cast<unsigned long long>(ticksPlayed_),
+                  static_cast<unsigned long long>(framesShown_),
+                  double(framesShown_) / std::max(now - started, 1e-3));
+      break;
+    }
+    if (menu_.quitRequested) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+    ++framesSinceTitle;
+    if (now - titleAt >= kTitleSeconds) {
+      fps_ = framesSinceTitle / (now - titleAt);
+      updateTitle(fps_);
+      titleAt = now;
+      framesSinceTitle = 0;
+    }
+  }
+  finishRecording(played_.recording, *played_.simulation, played_.level->name);
+  saveSettingsIfChanged(settings_, savedSettings_);
+  // The presenter's last blit reads the renderer's image: finish it before either goes.
+  vkDeviceWaitIdle(context_.device());
+  played_.simulation.reset();
+  ui_.reset();
+  return captureFailed_ ? 1 : 0;
+}
+
+LevelSetup Game::levelSetup() const {
+  return {context_, compiler_, window_, options_, settings_, levels_};
+}
+
+void Game::load(const fs::path& file) {
+  startLevel(played_, file, levelSetup());
+  updateTitle(0.0);
+}
+
+void Game::setPaused(bool paused) {
+  paused_ = paused;
+  resetMenu(menu_, paused);
+  if (!paused) saveSettingsIfChanged(settings_, savedSettings_);
+  setMouseCaptured(window_, look_, !paused);
+  updateTitle(0.0);
+}
+
+void Game::handlePresses() {
+  // What the menu chose last frame, now that no frame is being built.
+  if (menu_.pendingLevel) {
+    const fs::path file = *menu_.pendingLevel;
+    menu_.pendingLevel.reset();
+    try {
+      load(file);
+      setPaused(false);
+    } catch (const game::LevelError& error) {
+      std::fprintf(stderr, "%s\n(keeping the level as it was)\n", error.what());
+    }
+  }
+  if (menu_.resumeRequested) {
+    menu_.resumeRequested = false;
+    setPaused(false);
+  }
+  if (gamepadStartPressed(startWasDown_)) setPaused(!paused_);
+  for (int key : events_.keysPressed) {
+    if (menu_.rebinding) {  // the menu waits for the key to bind; Escape cancels
+      rebindAction(settings_, keyCodes_, *menu_.rebinding, key);
+      menu_.rebinding.reset();
+      continue;
+    }
+    switch (keyActionFor(keyCodes_, key)) {
+      case KeyAction::Pause:
+        setPaused(!paused_);
+        break;
+      case KeyAction::Restart:
+        if (restartLevel(played_, levelSetup())) updateTitle(0.0);
+        break;
+      case KeyAction::Fullscreen:
+        toggleFullscreen(window_, windowed_);
+        break;
+      case KeyAction::Vsync:
+        toggleVsync(presenter_, settings_);
+        break;
+      case KeyAction::AuthorOverlay:
+        authorOverlay_ = !authorOverlay_;
+        break;
+      case KeyAction::Screenshot:
+        screenshotRequested_ = true;
+        presenter_.captureNextPresent();
+        break;
+      case KeyAction::None:
+        break;
+    }
+  }
+  events_.keysPressed.clear();
+  if (!paused_) startWheelAdjust(wheel_, events_.wheel);
+  events_.wheel = 0.0;
+}
+
+void Game::runTicks(double elapsed) {
+  sim::Simulation& simulation = *played_.simulation;
+  if (simulation.outcome() != game::Outcome::Playing) return;  // the world waits
+  // At most TickClock::MAX_TICKS_PER_FRAME; the backlog of a longer frame is dropped.
+  const int due = played_.tickClock.advance(elapsed);
+  if (due == 0) return;
+  const game::TickInput held = heldInput(window_, keyCodes_);
+  // The mouse moved over the whole frame: spread it evenly over the frame's ticks.
+  const glm::vec2 lookPerTick = look_.pending / float(due);
+  look_.pending = glm::vec2(0.0f);
+  for (int i = 0; i < due; ++i) {
+    game::TickInput input = held;
+    input.yawDeltaDegrees += lookPerTick.x;
+    input.pitchDeltaDegrees += lookPerTick.y;
+    applyWheelAdjust(wheel_, input);
+    simulation.step(input);
+    if (played_.recording) game::appendTickInput(*played_.recording, input);
+    ++ticksPlayed_;
+    if (options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks) return;
+    if (simulation.outcome() != game::Outcome::Playing) return;
+  }
+}
+
+void Game::updateTitle(double fps) {
+  showTitle(window_, *played_.level, *played_.simulation, fps, paused_, authorOverlay_);
+}
+
+}  // namespace play

@@ -1,0 +1,68 @@
+#pragma once
+// play: the game in a GLFW window. Fixed 60 Hz ticks drive the simulation; every displayed
+// frame renders a picture at the internal resolution and the presenter scales it to the window.
+// The loop composes the parts: input, level flow, HUD, menu, recording and the window.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <vector>
+
+#include "game/settings.hpp"
+#include "play/input.hpp"
+#include "play/level_flow.hpp"
+#include "play/menu.hpp"
+#include "play/play_options.hpp"
+#include "play/ui_layer.hpp"
+#include "play/window.hpp"
+
+struct GLFWwindow;
+
+namespace play {
+
+class Game {
+ public:
+  // `levels`: the shipped levels in play order (the menu's list; a win moves on to the next).
+  Game(const PlayOptions& options, const game::Settings& settings,
+       std::vector<std::filesystem::path> levels, GLFWwindow* window,
+       const render::Context& context, render::ShaderCompiler& compiler,
+       render::Presenter& presenter);
+
+  // Plays until the window closes or --quit-after-ticks; returns the exit status.
+  int run(const std::filesystem::path& firstLevel);
+
+ private:
+  LevelSetup levelSetup() const;
+  void load(const std::filesystem::path& file);
+  void setPaused(bool paused);
+  void handlePresses();
+  void runTicks(double elapsed);
+  void updateTitle(double fps);
+
+  const PlayOptions& options_;
+  game::Settings settings_;       // as the menu changes them
+  game::Settings savedSettings_;  // as settings.json holds them
+  GLFWwindow* window_;
+  const render::Context& context_;
+  render::ShaderCompiler& compiler_;
+  render::Presenter& presenter_;
+  const std::vector<std::filesystem::path> levels_;
+  ShownSwapchain shownSwapchain_;
+  WindowedPlacement windowed_;
+  PendingEvents events_;  // before ui_: ImGui's GLFW backend passes events on to its callbacks
+  KeyCodes keyCodes_;
+  MouseLook look_;
+  WheelAdjust wheel_;
+  bool startWasDown_ = false;
+  PlayedLevel played_;
+  bool paused_ = false;
+  bool authorOverlay_ = false;  // F3: raw probe values on screen and in the title
+  uint64_t ticksPlayed_ = 0;    // over all levels, for --quit-after-ticks
+  uint64_t framesShown_ = 0;
+  double fps_ = 0.0;
+  bool screenshotRequested_ = false;
+  bool captureFailed_ = false;
+  std::unique_ptr<UiLayer> ui_;  // text and menus; goes before the level (it waits for the GPU)
+  Menu menu_;
+};
+
+}  // namespace play

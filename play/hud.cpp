@@ -1,0 +1,159 @@
+#include "play/hud.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
+#include <imgui.h>
+
+#include "play/level_flow.hpp"
+#include "sim/simulation.hpp"
+
+namespace play {
+namespace {
+
+// The HUD's bars, in fractions of the picture: rows grow upwards from the bottom one.
+constexpr float kBarTop = 0.93f, kBarGap = 0.045f, kBarHeight = 0.025f, kBarWidth = 0.3f;
+constexpr float kGoalBarLeft = 0.02f, kExposureBarLeft = 0.68f;
+constexpr size_t kHudRows = 4;
+
+ImU32 colour(uint8_t red, uint8_t green, uint8_t blue) {
+  return IM_COL32(red, green, blue, 255);
+}
+
+// Text with a dark drop shadow, readable over bright and dark parts of the picture.
+void shadowedText(ImDrawList* list, ImVec2 at, ImU32 textColour, const std::string& text,
+                  float size, float wrapWidth = 0.0f) {
+  ImFont* font = ImGui::GetFont();
+  list->AddText(font, size, ImVec2(at.x + 1.5f, at.y + 1.5f), IM_COL32(0, 0, 0, 220), text.c_str(),
+                nullptr, wrapWidth);
+  list->AddText(font, size, at, textColour, text.c_str(), nullptr, wrapWidth);
+}
+
+std::string percent(float share) {
+  return std::to_string(int(std::clamp(share, 0.0f, 1.0f) * 100.0f + 0.5f)) + "%";
+}
+
+// F3: what the rules see, for level authors tuning goals.
+void drawAuthorOverlay(const PlayedLevel& played) {
+  const sim::Simulation& simulation = *played.simulation;
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x - 10.0f, display.y * 0.15f), ImGuiCond_Always,
+                          ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowBgAlpha(0.7f);
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
+                                 ImGuiWindowFlags_NoInputs;
+  if (ImGui::Begin("Probe values (F3)", nullptr, flags)) {
+    ImGui::Text("tick %llu, %ux%u", static_cast<unsigned long long>(simulation.tick()),
+                played.renderWidth, played.renderHeight);
+    if (const auto& readings = simulation.latestReadings()) {
+      ImGui::Text("readings of tick %llu", static_cast<unsigned long long>(readings->tick));
+      for (size_t i = 0; i < readings->focusCoverage.size(); ++i)
+        ImGui::Text("focus %zu coverage  %.4f", i, double(readings->focusCoverage[i]));
+      for (size_t i = 0; i < readings->exposure.size(); ++i)
+        ImGui::Text("exposure %zu  %.4f", i, double(readings->exposure[i]));
+    } else {
+      ImGui::TextUnformatted("no readings yet");
+    }
+    for (const game::GoalProgress& goal : simulation.rules().progress())
+      ImGui::Text("%s  %.4f%s", goal.label.c_str(), double(goal.progress),
+                  goal.met ? " (met)" : "");
+  }
+  ImGui::End();
+}
+
+}  // namespace
+
+std::vector<render::HudRect> hudRects(const sim::Simulation& simulation) {
+  using render::HudColour;
+  std::vector<render::HudRect> rects;
+  for (const game::FocusProbe& focus : simulation.layout().focus) {
+    const float x0 = 0.5f - focus.region.x / 2, x1 = 0.5f + focus.region.x / 2;
+    const float y0 = 0.5f - focus.region.y / 2, y1 = 0.5f + focus.region.y / 2;
+    constexpr float kLine = 0.004f;
+    rects.push_back({x0, y0, x1, y0 + kLine, HudColour::White});
+    rects.push_back({x0, y1 - kLine, x1, y1, HudColour::White});
+    rects.push_back({x0, y0, x0 + kLine, y1, HudColour::White});
+    rects.push_back({x1 - kLine, y0, x1, y1, HudColour::White});
+  }
+  auto bar = [&](float x0, int row, float value, HudColour fill) {
+    const float y0 = kBarTop - kBarGap * float(row), y1 = y0 + kBarHeight;
+    rects.push_back({x0, y0, x0 + kBarWidth, y1, HudColour::Shade});
+    if (value > 0.0f)
+      rects.push_back({x0, y0, x0 + kBarWidth * std::clamp(value, 0.0f, 1.0f), y1, fill});
+  };
+  const auto& goals = simulation.rules().progress();
+  for (size_t i = 0; i < goals.size() && i < kHudRows; ++i)
+    bar(kGoalBarLeft, int(i), goals[i].progress,
+        goals[i].met ? HudColour::BluishGreen : HudColour::SkyBlue);
+  if (const auto& readings = simulation.latestReadings()) {
+    for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i)
+      bar(kExposureBarLeft, int(i), readings->exposure[i], HudColour::Orange);
+  }
+  const game::Outcome outcome = simulation.outcome();
+  if (outcome != game::Outcome::Playing)
+    rects.push_back(
+        {0.0f, 0.02f, 1.0f, 0.06f,
+         outcome == game::Outcome::Won ? HudColour::BluishGreen : HudColour::Vermillion});
+  return rects;
+}
+
+void drawScreenText(const PlayedLevel& played, const render::Presenter& presenter, double fps,
+                    bool authorOverlay) {
+  const game::Level& level = *played.level;
+  const sim::Simulation& simulation = *played.simulation;
+  ImDrawList* list = ImGui::GetForegroundDrawList();
+  const render::PictureRect picture =
+      presenter.pictureRect(played.renderWidth, played.renderHeight);
+  const float size = ImGui::GetFontSize();
+  const float margin = std::max(6.0f, picture.width * 0.015f);
+  auto at = [&](float x, float y) {
+    return ImVec2(picture.x + x * picture.width, picture.y + y * picture.height);
+  };
+  const ImU32 white = colour(255, 255, 255);
+  const ImU32 green = colour(0, 158, 115), vermillion = colour(213, 94, 0);
+  ImVec2 top(picture.x + margin, picture.y + picture.height * 0.07f);
+  shadowedText(list, top, white, level.name, size * 1.35f);
+  if (!level.hint.empty()) {
+    top.y += size * 1.6f;
+    shadowedText(list, top, colour(230, 230, 230), level.hint, size, picture.width * 0.55f);
+  }
+  const std::string fpsText = std::to_string(int(fps + 0.5)) + " fps";
+  const float fpsWidth = ImGui::CalcTextSize(fpsText.c_str()).x;
+  const ImVec2 topRight = at(1.0f, 0.07f);
+  shadowedText(list, ImVec2(topRight.x - margin - fpsWidth, topRight.y), white, fpsText, size);
+
+  // Beside the bars hudRects() draws: goals on the left, exposure meters on the right.
+  const auto& goals = simulation.rules().progress();
+  for (size_t i = 0; i < goals.size() && i < kHudRows; ++i) {
+    const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
+    const ImVec2 position = at(kGoalBarLeft + kBarWidth + 0.01f, y);
+    shadowedText(list, ImVec2(position.x, position.y - size / 2), goals[i].met ? green : white,
+                 goals[i].label + "  " + percent(goals[i].progress), size);
+  }
+  if (const auto& readings = simulation.latestReadings()) {
+    for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i) {
+      const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
+      const std::string text =
+          "sensor " + std::to_string(i + 1) + " lit  " + percent(readings->exposure[i]);
+      const ImVec2 position = at(kExposureBarLeft - 0.01f, y);
+      shadowedText(list,
+                   ImVec2(position.x - ImGui::CalcTextSize(text.c_str()).x, position.y - size / 2),
+                   white, text, size);
+    }
+  }
+  const game::Outcome outcome = simulation.outcome();
+  if (outcome != game::Outcome::Playing) {
+    const std::string text = outcome == game::Outcome::Won
+                                 ? "Level complete! The next level follows in a moment."
+                                 : "Lost: " + simulation.rules().reason() + ". Restarting.";
+    const float big = size * 1.5f;
+    const float width = ImGui::CalcTextSize(text.c_str()).x * 1.5f;
+    shadowedText(list, ImVec2(picture.x + (picture.width - width) / 2, at(0, 0.3f).y),
+                 outcome == game::Outcome::Won ? green : vermillion, text, big);
+  }
+  if (authorOverlay) drawAuthorOverlay(played);
+}
+
+}  // namespace play

@@ -1,0 +1,26 @@
+#pragma once
+// The heads-up display over the picture: its shapes, which the presenter draws, and its text,
+// drawn with Dear ImGui.
+#include <vector>
+
+#include "render/presenter.hpp"
+
+namespace sim {
+class Simulation;
+}
+
+namespace play {
+
+struct PlayedLevel;
+
+// Each focus region's frame, a bar per goal (blue, green when met), a meter per exposure probe
+// (orange), and a band at the top once the level is won (green) or lost (red-orange).
+std::vector<render::HudRect> hudRects(const sim::Simulation& simulation);
+
+// Level name and hint (top left), fps (top right), a label beside each HUD bar, the outcome,
+// and with `authorOverlay` (F3) the raw probe readings. Between UiLayer's beginFrame and
+// endFrame.
+void drawScreenText(const PlayedLevel& played, const render::Presenter& presenter, double fps,
+                    bool authorOverlay);
+
+}  // namespace play

@@ -1,0 +1,141 @@
+#include "play/level_flow.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <GLFW/glfw3.h>
+
+#include "game/level_loader.hpp"
+#include "game/progress.hpp"
+#include "game/user_paths.hpp"
+#include "play/recording.hpp"
+#include "play/window.hpp"
+#include "render/context.hpp"
+
+namespace play {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kOutcomeSeconds = 2.0;  // how long "won"/"lost" shows before moving on
+constexpr uint32_t kMinRenderSide = 16;  // the smallest internal image side render scale gives
+
+// --size wins; otherwise the window's size (in screen units, so a high-DPI screen does not
+// quadruple the work) times the render scale: 1280x720 at 0.25 gives 320x180.
+void chooseRenderSize(PlayedLevel& played, const LevelSetup& setup) {
+  if (setup.options.pictureSize) {
+    played.renderWidth = setup.options.pictureSize->first;
+    played.renderHeight = setup.options.pictureSize->second;
+    return;
+  }
+  int width = 0, height = 0;
+  glfwGetWindowSize(setup.window, &width, &height);
+  if (width <= 0 || height <= 0) {  // minimised: the default window's shape
+    width = kWindowWidth;
+    height = kWindowHeight;
+  }
+  const float scale = setup.settings.renderScale;
+  played.renderWidth = std::max(kMinRenderSide, uint32_t(std::lround(width * scale)));
+  played.renderHeight = std::max(kMinRenderSide, uint32_t(std::lround(height * scale)));
+}
+
+void finishRecordingOf(PlayedLevel& played) {
+  finishRecording(played.recording, *played.simulation, played.level->name);
+}
+
+// A won level unlocks the next one (progress.json); a failed save is said, not fatal.
+void saveWin(const fs::path& levelFile) {
+  const fs::path file = game::progressFile();
+  game::ProgressLoad loaded = game::loadProgress(file);
+  game::markWon(loaded.progress, levelFile.filename().string());
+  try {
+    game::saveProgress(loaded.progress, file);
+  } catch (const std::exception& error) {
+    std::fprintf(stderr, "progress not saved: %s\n", error.what());
+  }
+}
+
+}  // namespace
+
+void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& setup) {
+  if (played.simulation) finishRecordingOf(played);  // leaving the recorded level
+  auto level = std::make_unique<game::Level>(game::loadLevel(file));
+  for (const std::string& warning : level->warnings)
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  vkDeviceWaitIdle(setup.context.device());  // the last blit may still read the old image
+  played.simulation.reset();
+  played.level = std::move(level);
+  played.file = file;
+  chooseRenderSize(played, setup);
+  played.activeFov = setup.settings.fieldOfViewDegrees;
+  played.activeScale = setup.settings.renderScale;
+  sim::SimulationOptions simulationOptions;
+  simulationOptions.width = played.renderWidth;
+  simulationOptions.height = played.renderHeight;
+  simulationOptions.verticalFovDegrees = setup.settings.fieldOfViewDegrees;
+  played.simulation = std::make_unique<sim::Simulation>(setup.context, setup.compiler,
+                                                        *played.level, simulationOptions);
+  played.tickClock.reset();
+  played.lastFrameAt = glfwGetTime();  // loading time is not play time
+  played.outcomeAt = -1.0;
+  std::printf("playing %s (%s) at %ux%u\n", played.level->name.c_str(), file.c_str(),
+              played.renderWidth, played.renderHeight);
+  std::fflush(stdout);
+}
+
+bool restartLevel(PlayedLevel& played, const LevelSetup& setup) {
+  try {
+    startLevel(played, played.file, setup);
+    return true;
+  } catch (const game::LevelError& error) {
+    std::fprintf(stderr, "%s\n(keeping the level as it was)\n", error.what());
+    return false;
+  }
+}
+
+bool startNextLevel(PlayedLevel& played, const LevelSetup& setup) {
+  auto current = std::find_if(setup.levels.begin(), setup.levels.end(), [&](const fs::path& level) {
+    return fs::weakly_canonical(level) == fs::weakly_canonical(played.file);
+  });
+  if (current == setup.levels.end()) return restartLevel(played, setup);  // not shipped: again
+  ++current;
+  if (current == setup.levels.end()) {
+    std::printf("that was the last level; starting again from the first\n");
+    current = setup.levels.begin();
+  }
+  startLevel(played, *current, setup);
+  return true;
+}
+
+bool advanceAfterOutcome(PlayedLevel& played, double now, const LevelSetup& setup) {
+  const game::Outcome outcome = played.simulation->outcome();
+  if (outcome == game::Outcome::Playing) return false;
+  if (played.outcomeAt < 0.0) {
+    played.outcomeAt = now;
+    finishRecordingOf(played);
+    if (outcome == game::Outcome::Won) saveWin(played.file);
+    const game::Rules& rules = played.simulation->rules();
+    std::printf("%s %s at tick %llu%s%s\n", outcome == game::Outcome::Won ? "won" : "lost",
+                played.level->name.c_str(),
+                static_cast<unsigned long long>(played.simulation->tick()),
+                rules.reason().empty() ? "" : ": ", rules.reason().c_str());
+    std::fflush(stdout);
+    return true;
+  }
+  if (now - played.outcomeAt < kOutcomeSeconds) return false;
+  if (outcome == game::Outcome::Won) return startNextLevel(played, setup);
+  return restartLevel(played, setup);
+}
+
+fs::path firstUnwonLevel(const std::vector<fs::path>& levels) {
+  const game::ProgressLoad loaded = game::loadProgress(game::progressFile());
+  for (const std::string& message : loaded.messages) std::fprintf(stderr, "%s\n", message.c_str());
+  for (const fs::path& level : levels) {
+    if (!loaded.progress.completed.contains(level.filename().string())) return level;
+  }
+  return levels.front();
+}
+
+}  // namespace play

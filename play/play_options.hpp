@@ -1,0 +1,19 @@
+#pragma once
+// What `sightline play` takes from the command line (app/ parses it).
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <utility>
+
+namespace play {
+
+struct PlayOptions {
+  // --size WxH fixes the picture; otherwise it follows the window and the render scale.
+  std::optional<std::pair<uint32_t, uint32_t>> pictureSize;
+  uint64_t quitAfterTicks = 0;                   // exit cleanly after this many ticks (0: play on)
+  bool hudOff = false;                           // no heads-up display or text over the picture
+  std::optional<std::filesystem::path> record;   // write the first level's run as a replay
+  std::optional<std::filesystem::path> capture;  // the last frame's window image (PNG)
+};
+
+}  // namespace play
