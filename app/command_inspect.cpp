@@ -1,4 +1,5 @@
 // validate, info and devices: look at levels and devices without rendering.
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -71,8 +72,24 @@ int commandInfo(const Options& options) {
   std::printf("  textures: %s\n", features.textures ? "yes" : "no");
   std::printf("  movers: %s, interactables: %s\n", features.movers ? "yes" : "no",
               features.interactables ? "yes" : "no");
-  std::printf("  goal: %s, lose conditions: %zu\n", level.goal ? "yes" : "none (sandbox)",
+  const bool rulesCanEnd =
+      std::any_of(level.rules.begin(), level.rules.end(), [](const auto& rule) {
+        return std::any_of(rule.actions.begin(), rule.actions.end(),
+                           [](const game::Action& action) {
+                             return action.type == game::Action::Type::Win ||
+                                    action.type == game::Action::Type::Lose;
+                           });
+      });
+  std::printf("  goal: %s, lose conditions: %zu\n",
+              level.goal    ? "yes"
+              : rulesCanEnd ? "none (its rules win or lose it)"
+                            : "none (sandbox)",
               level.lose.size());
+  if (!level.rules.empty()) {
+    std::printf("  logic: %zu rule%s:", level.rules.size(), level.rules.size() == 1 ? "" : "s");
+    for (const game::Rule& rule : level.rules) std::printf(" %s", rule.id.c_str());
+    std::printf("\n");
+  }
   for (const std::string& warning : level.warnings) std::printf("  warning: %s\n", warning.c_str());
   return 0;
 }

@@ -1,4 +1,5 @@
 // `sightline replay`: runs replays headless and checks what they expect.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -86,6 +87,9 @@ class TraceWriter {
     for (size_t i = 0; i < simulation.layout().focus.size(); ++i) out_ << ",focus" << i;
     for (size_t i = 0; i < simulation.layout().exposure.size(); ++i) out_ << ",exposure" << i;
     for (size_t i = 0; i < simulation.rules().progress().size(); ++i) out_ << ",progress" << i;
+    // Per rule: how many times it has fired so far.
+    for (size_t i = 0; i < simulation.logic().ruleCount(); ++i)
+      out_ << ",rule:" << simulation.logic().ruleId(i);
     out_ << ",outcome\n";
   }
   void write(const sim::Simulation& simulation) {
@@ -99,6 +103,8 @@ class TraceWriter {
     for (size_t i = 0; i < simulation.layout().exposure.size(); ++i)
       out_ << "," << (readings ? readings->exposure[i] : 0.0f);
     for (const auto& goal : simulation.rules().progress()) out_ << "," << goal.progress;
+    for (size_t i = 0; i < simulation.logic().ruleCount(); ++i)
+      out_ << "," << simulation.logic().firings(i).size();
     out_ << "," << game::outcomeName(replayOutcomeOf(simulation.outcome())) << "\n";
   }
 
@@ -108,11 +114,47 @@ class TraceWriter {
 
 // The replay's level, or a ReplayError that names where the replay names it.
 game::Level loadReplayLevel(const game::Replay& replay) {
+  game::Level level;
   try {
-    return game::loadLevel(replay.level);
+    level = game::loadLevel(replay.level);
   } catch (const game::LevelError& error) {
     throw game::ReplayError(replay.levelPlace + ": level: " + error.what());
   }
+  for (const game::FiredExpectation& fired : replay.fired) {
+    const bool known = std::any_of(level.rules.begin(), level.rules.end(),
+                                   [&](const game::Rule& rule) { return rule.id == fired.rule; });
+    if (!known) {
+      throw game::ReplayError(fired.ruleAt + ": " + fired.place +
+                              ".rule: the level has no rule \"" + fired.rule + "\"");
+    }
+  }
+  return level;
+}
+
+// A fired expectation against the rule's firings: "" when it holds, else what happened.
+std::string checkFired(const game::FiredExpectation& expectation, const game::Logic& logic) {
+  size_t rule = 0;
+  while (logic.ruleId(rule) != expectation.rule) ++rule;
+  const std::vector<uint64_t>& firings = logic.firings(rule);
+  std::string happened = "it never fired";
+  if (!firings.empty()) {
+    happened = "it fired on tick";
+    for (size_t i = 0; i < firings.size() && i < 8; ++i)
+      happened += (i ? ", " : " ") + std::to_string(firings[i]);
+    if (firings.size() > 8) happened += ", ... (" + std::to_string(firings.size()) + " times)";
+  }
+  if (expectation.never) {
+    return firings.empty()
+               ? ""
+               : "expected rule \"" + expectation.rule + "\" never to fire; " + happened;
+  }
+  const bool within = std::any_of(firings.begin(), firings.end(), [&](uint64_t tick) {
+    return tick >= expectation.firstTick && tick <= expectation.lastTick;
+  });
+  return within ? ""
+                : "expected rule \"" + expectation.rule + "\" to fire between ticks " +
+                      std::to_string(expectation.firstTick) + " and " +
+                      std::to_string(expectation.lastTick) + "; " + happened;
 }
 
 ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& compiler,
@@ -211,6 +253,10 @@ ReplayResult runReplay(const render::Context& context, render::ShaderCompiler& c
       (got == game::ReplayOutcome::Playing ||
        (simulation.tick() >= expected.firstTick && simulation.tick() <= expected.lastTick));
   if (!outcomeHolds) fail("outcome: expected " + expectedText + ", got " + gotText);
+  for (const game::FiredExpectation& expectation : replay.fired) {
+    const std::string problem = checkFired(expectation, simulation.logic());
+    if (!problem.empty()) fail(expectation.place + ": " + problem);
+  }
   std::printf("%s: %s %s; %llu ticks in %.2f s (%.0f ticks/s, %llu probe frames)\n",
               replay.file.c_str(), result.passed ? "PASS" : "FAIL", gotText.c_str(),
               static_cast<unsigned long long>(simulation.tick()), seconds,

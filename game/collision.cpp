@@ -256,6 +256,7 @@ std::optional<RayHit> CollisionWorld::rayCast(const glm::vec3& origin, const glm
   float limit = maxDistance;
   for (uint32_t e = 0; e < entities_.size(); ++e) {
     const Placed& placed = entities_[e];
+    if (!placed.solid) continue;
     if (!rayEntersBox(placed.worldBox, origin, 1.0f / unit, limit)) continue;
     // In the entity's space the unnormalised direction keeps t a world distance.
     const glm::vec3 localOrigin = glm::vec3(placed.inverse * glm::vec4(origin, 1.0f));
@@ -283,7 +284,7 @@ std::optional<CapsuleContact> CollisionWorld::deepestContact(const glm::vec3& fe
   std::optional<CapsuleContact> best;
   for (uint32_t e = 0; e < entities_.size(); ++e) {
     const Placed& placed = entities_[e];
-    if (!placed.worldBox.overlaps(query)) continue;
+    if (!placed.solid || !placed.worldBox.overlaps(query)) continue;
     const TriangleCollider& collider = colliders_[placed.collider];
     collider.forEachOverlapping(transformAabb(query, placed.inverse), [&](uint32_t i) {
       const glm::vec3* local = collider.triangle(i);

@@ -85,6 +85,8 @@ class CollisionWorld {
 
   size_t entityCount() const { return entities_.size(); }
   void setTransform(uint32_t entity, const glm::mat4& objectToWorld);
+  // A non-solid entity (hidden by level logic) is skipped by ray casts and contacts.
+  void setSolid(uint32_t entity, bool solid) { entities_[entity].solid = solid; }
   const glm::mat4& transform(uint32_t entity) const { return entities_[entity].transform; }
   const Aabb& worldBounds(uint32_t entity) const { return entities_[entity].worldBox; }
 
@@ -104,6 +106,7 @@ class CollisionWorld {
     glm::mat4 transform{1.0f};
     glm::mat4 inverse{1.0f};
     Aabb worldBox;
+    bool solid = true;
   };
   std::vector<TriangleCollider> colliders_;
   std::vector<Placed> entities_;

@@ -55,10 +55,13 @@ JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
   return sax.error;
 }
 
+std::string fileLineColumn(const std::filesystem::path& file, SourcePosition at) {
+  return file.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column);
+}
+
 std::string placeInFile(const std::filesystem::path& file, SourcePosition at,
                         const std::string& path) {
-  return file.string() + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " +
-         (path.empty() ? "" : path + ": ");
+  return fileLineColumn(file, at) + ": " + (path.empty() ? "" : path + ": ");
 }
 
 std::string readAtMostPastLimit(std::istream& stream, std::size_t maxBytes) {

@@ -25,6 +25,9 @@ struct JsonSyntaxError {
 // Runs a SAX pass over `text`, which must fail to parse, and says where and why it fails.
 JsonSyntaxError firstJsonSyntaxError(std::string_view text);
 
+// "<file>:<line>:<column>".
+std::string fileLineColumn(const std::filesystem::path& file, SourcePosition at);
+
 // "<file>:<line>:<column>: " followed by "<path>: " when `path` is not empty.
 std::string placeInFile(const std::filesystem::path& file, SourcePosition at,
                         const std::string& path = "");

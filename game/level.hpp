@@ -7,6 +7,7 @@
 
 #include <glm/glm.hpp>
 
+#include "game/level_logic.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace game {
@@ -24,6 +25,7 @@ struct Mover {
   Repeat repeat = Repeat::Loop;
   Easing easing = Easing::Linear;
   std::vector<Keyframe> keyframes;  // 2..256
+  bool startsPlaying = true;        // false: waits at its first keyframe for a rule to play it
 };
 
 struct Interactable {
@@ -94,6 +96,7 @@ struct Level {
   std::vector<scene::LightDesc> lights;
   std::optional<Goal> goal;
   std::vector<LoseCondition> lose;
+  std::vector<Rule> rules;  // the "logic" section, in file order
   // Every file the level was built from (the JSON, models, buffers, textures), for reload.
   std::vector<std::filesystem::path> sourceFiles;
   std::vector<std::string> warnings;  // e.g. degenerate triangles dropped, with file and count

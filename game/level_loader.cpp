@@ -31,10 +31,11 @@ Level readLevel(LevelReader& reader, const std::string& text) {
   // The format decides what every other key means, so it is checked before them.
   if (!root.contains("format")) reader.failMissing("", "format");
   level.format = reader.readFormat(root["format"]);
-  reader.checkKeys(root, "",
-                   {"format", "name", "description", "author", "hint", "camera", "environment",
-                    "rendering", "materials", "meshes", "entities", "lights", "goal", "lose"},
-                   {"name", "camera", "materials", "meshes", "entities"});
+  reader.checkKeys(
+      root, "",
+      {"format", "name", "description", "author", "hint", "camera", "environment", "rendering",
+       "materials", "meshes", "entities", "lights", "goal", "lose", "logic"},
+      {"name", "camera", "materials", "meshes", "entities"});
   level.name = reader.readName(root["name"], "/name");
   level.description = reader.readOptionalString(root, "description", "");
   level.author = reader.readOptionalString(root, "author", "");
@@ -52,7 +53,8 @@ Level readLevel(LevelReader& reader, const std::string& text) {
   const std::map<IdKind, const char*> sectionKeys{{IdKind::Material, "materials"},
                                                   {IdKind::Mesh, "meshes"},
                                                   {IdKind::Entity, "entities"},
-                                                  {IdKind::Light, "lights"}};
+                                                  {IdKind::Light, "lights"},
+                                                  {IdKind::Rule, "logic"}};
   for (const auto& [kind, key] : sectionKeys) {
     if (root.contains(key)) reader.declareIds(root[key], std::string("/") + key, kind);
   }
@@ -85,6 +87,7 @@ Level readLevel(LevelReader& reader, const std::string& text) {
       });
   if (root.contains("goal")) level.goal = readGoal(reader, root["goal"], "/goal", 1);
   if (root.contains("lose")) level.lose = readLoseConditions(reader, root["lose"], "/lose");
+  if (root.contains("logic")) readLogic(reader, root["logic"], "/logic", level);
   return level;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 // First-person walking: a vertical capsule moved in fixed ticks against the collision world.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 
@@ -49,6 +50,7 @@ class PlayerController {
 
   // Places the feet (a respawn); the player starts falling from there.
   void teleport(const glm::vec3& feet);
+  void setYawDegrees(float degrees) { yawDegrees_ = std::remainder(degrees, 360.0f); }
   // Only the vertical part lasts: walking sets the horizontal velocity every tick.
   void setVelocity(const glm::vec3& velocity) {
     velocity_ = velocity;

@@ -22,6 +22,24 @@ void addGoalProbes(const Goal& goal, ProbeLayout& layout) {
   }
 }
 
+// Same order as the logic's own walk over its conditions (game/logic.cpp).
+void addConditionProbes(const Condition& condition, ProbeLayout& layout) {
+  switch (condition.type) {
+    case Condition::Type::Focus:
+      layout.focus.push_back({condition.entity, condition.region});
+      break;
+    case Condition::Type::Lit:
+      layout.exposure.push_back({ExposureProbe::Target::Entity, condition.entity, condition.light});
+      break;
+    case Condition::Type::Seen:
+      layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light});
+      break;
+    default:
+      break;
+  }
+  for (const Condition& child : condition.children) addConditionProbes(child, layout);
+}
+
 }  // namespace
 
 ProbeLayout probeLayout(const Level& level) {
@@ -31,6 +49,9 @@ ProbeLayout probeLayout(const Level& level) {
     if (lose.type == LoseCondition::Type::Stealth)
       layout.exposure.push_back({ExposureProbe::Target::Player, 0, lose.light});
   }
+  layout.firstLogicFocus = layout.focus.size();
+  layout.firstLogicExposure = layout.exposure.size();
+  for (const Rule& rule : level.rules) addConditionProbes(rule.condition, layout);
   return layout;
 }
 

@@ -26,10 +26,13 @@ struct ExposureProbe {
 };
 
 // Every probe a level needs, in a fixed order: focus goals and lit goals in the order they
-// appear in the goal tree (depth first), then stealth lose conditions in file order.
+// appear in the goal tree (depth first), then stealth lose conditions in file order, then the
+// focus, lit and seen conditions of the logic's rules (file order, depth first).
 struct ProbeLayout {
   std::vector<FocusProbe> focus;
   std::vector<ExposureProbe> exposure;
+  size_t firstLogicFocus = 0;  // where the logic's probes start
+  size_t firstLogicExposure = 0;
 };
 ProbeLayout probeLayout(const Level& level);
 

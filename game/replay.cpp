@@ -50,9 +50,7 @@ class ReplayParser {
     if (!root["level"].is_string() || root["level"].get<std::string>().empty())
       fail("/level", "expected a path to a level file");
     replay.level = (file_.parent_path() / root["level"].get<std::string>()).lexically_normal();
-    const SourcePosition levelAt = positions_.valueAt("/level");
-    replay.levelPlace =
-        file_.string() + ":" + std::to_string(levelAt.line) + ":" + std::to_string(levelAt.column);
+    replay.levelPlace = fileLineColumn(file_, positions_.valueAt("/level"));
     if (root.contains("size")) {
       const Json& size = root["size"];
       if (!size.is_array() || size.size() != 2) fail("/size", "expected [width, height]");
@@ -195,9 +193,42 @@ class ReplayParser {
     return tick;
   }
 
+  void readFiredExpectations(const Json& fired, Replay& replay) const {
+    if (!fired.is_array()) fail("/expect/fired", "expected an array");
+    const int64_t last = int64_t(replay.ticks) - 1;
+    for (size_t i = 0; i < fired.size(); ++i) {
+      const std::string pointer = "/expect/fired/" + std::to_string(i);
+      const Json& entry = fired[i];
+      if (!entry.is_object()) fail(pointer, "expected an object");
+      checkKeys(entry, pointer, {"rule", "between", "never"});
+      FiredExpectation parsed;
+      parsed.place = positions_.dottedPath(pointer);
+      require(entry, pointer, "rule");
+      if (!entry["rule"].is_string() || entry["rule"].get<std::string>().empty())
+        fail(pointer + "/rule", "expected a rule id");
+      parsed.rule = entry["rule"].get<std::string>();
+      parsed.ruleAt = fileLineColumn(file_, positions_.valueAt(pointer + "/rule"));
+      if (entry.contains("between") == entry.contains("never"))
+        fail(pointer, "expected exactly one of \"between\" and \"never\"");
+      if (entry.contains("never")) {
+        if (!readBool(entry["never"], pointer + "/never"))
+          fail(pointer + "/never", "expected true (leave \"never\" out to expect a firing)");
+        parsed.never = true;
+      } else {
+        const Json& between = entry["between"];
+        if (!between.is_array() || between.size() != 2)
+          fail(pointer + "/between", "expected [first tick, last tick]");
+        parsed.firstTick = uint64_t(readInteger(between[0], pointer + "/between/0", 0, last));
+        parsed.lastTick = uint64_t(
+            readInteger(between[1], pointer + "/between/1", int64_t(parsed.firstTick), last));
+      }
+      replay.fired.push_back(std::move(parsed));
+    }
+  }
+
   void readExpectations(const Json& expect, Replay& replay) const {
     if (!expect.is_object()) fail("/expect", "expected an object");
-    checkKeys(expect, "/expect", {"outcome", "between", "values", "player", "images"});
+    checkKeys(expect, "/expect", {"outcome", "between", "values", "player", "images", "fired"});
     if (expect.contains("outcome")) {
       const Json& outcome = expect["outcome"];
       const std::string word = outcome.is_string() ? outcome.get<std::string>() : "";
@@ -270,6 +301,7 @@ class ReplayParser {
         replay.players.push_back(parsed);
       }
     }
+    if (expect.contains("fired")) readFiredExpectations(expect["fired"], replay);
     if (expect.contains("images")) {
       const Json& images = expect["images"];
       if (!images.is_array()) fail("/expect/images", "expected an array");

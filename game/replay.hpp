@@ -70,6 +70,15 @@ struct ImageCheckpoint {
   std::string place;
 };
 
+// A level-logic rule fired at least once within [firstTick, lastTick], or never did.
+struct FiredExpectation {
+  std::string rule;    // the rule's id, checked against the level before the replay runs
+  std::string ruleAt;  // "file:line:col" of the id, for that check's message
+  bool never = false;
+  uint64_t firstTick = 0, lastTick = 0;  // inclusive; unless never
+  std::string place;
+};
+
 struct Replay {
   std::filesystem::path file;
   std::filesystem::path level;  // resolved against the replay's directory
@@ -86,6 +95,7 @@ struct Replay {
   std::vector<ValueExpectation> values;
   std::vector<PlayerExpectation> players;
   std::vector<ImageCheckpoint> images;
+  std::vector<FiredExpectation> fired;
 
   TickInput inputAt(uint64_t tick) const;
 };

@@ -59,7 +59,7 @@ Rules::Rules(const Level& level, const ProbeLayout& layout) {
     }
     losses_.push_back(std::move(loss));
   }
-  if (focusCount != layout.focus.size() || exposureCount != layout.exposure.size())
+  if (focusCount != layout.firstLogicFocus || exposureCount != layout.firstLogicExposure)
     throw std::invalid_argument("Rules: the probe layout does not match the level's goals");
   coverage_.assign(focusCount, 0.0f);
   exposure_.assign(exposureCount, 0.0f);
@@ -195,6 +195,15 @@ void Rules::update(uint64_t tick, const World& world, const ProbeReadings* lates
     return;
   }
   outcomeTick_ = tick;
+}
+
+void Rules::decide(Outcome outcome, uint64_t tick, const std::string& reason) {
+  const bool decidedEarlier = outcome_ != Outcome::Playing && outcomeTick_ != tick;
+  if (outcome == Outcome::Playing || decidedEarlier || outcome_ == Outcome::Lost) return;
+  if (outcome_ == Outcome::Won && outcome != Outcome::Lost) return;
+  outcome_ = outcome;
+  outcomeTick_ = tick;
+  reason_ = reason;
 }
 
 }  // namespace game

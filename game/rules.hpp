@@ -47,6 +47,10 @@ class Rules {
   // tick, or nullptr to keep using the previous ones.
   void update(uint64_t tick, const World& world, const ProbeReadings* latest);
 
+  // An outcome decided on `tick` elsewhere (a level logic's win or lose action), after update():
+  // a loss wins over a goal met on the same tick; nothing changes an earlier outcome.
+  void decide(Outcome outcome, uint64_t tick, const std::string& reason);
+
   Outcome outcome() const { return outcome_; }
   uint64_t outcomeTick() const { return outcomeTick_; }  // valid unless Playing
   const std::string& reason() const { return reason_; }  // "fell below -5 m", ...

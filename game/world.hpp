@@ -41,6 +41,8 @@ class World {
 
   size_t lightCount() const { return lightsEnabled_.size(); }
   bool lightEnabled(uint32_t light) const { return lightsEnabled_[light] != 0; }
+  // A switch interactable is on when the light it switches is.
+  bool switchOn(uint32_t entity) const;
   // The level's lights with their current enabled states.
   std::vector<scene::LightDesc> lights() const;
 
@@ -61,7 +63,33 @@ class World {
 
   const CollisionWorld& collision() const { return collision_; }
 
+  // ----- what level logic changes (game/logic.hpp); each takes effect from the next step -----
+
+  // A mover's clock runs forwards, backwards, or stands; Goto runs it to a keyframe and stops.
+  void playMover(uint32_t entity, int direction);  // +1, -1 or 0
+  void sendMoverToKeyframe(uint32_t entity, uint32_t keyframe);
+  // -1, 0 or +1; and whether it is heading for a keyframe.
+  int moverDirection(uint32_t entity) const { return movers_[entity].direction; }
+  void setLightEnabled(uint32_t light, bool enabled) { lightsEnabled_[light] = enabled ? 1 : 0; }
+  // A hidden entity is not rendered, traced or collided with (the renderer follows visible()).
+  void setVisible(uint32_t entity, bool visible);
+  bool visible(uint32_t entity) const { return visible_[entity] != 0; }
+  // A locked interactable cannot be picked or held.
+  void setLocked(uint32_t entity, bool locked);
+  bool locked(uint32_t entity) const { return locked_[entity] != 0; }
+  // Puts the player's feet at `feet`, facing `yawDegrees`, at rest.
+  void respawnPlayer(const glm::vec3& feet, float yawDegrees);
+
  private:
+  // Counted in ticks so that a mover that plays from the start is exactly where the world's
+  // time says (the same bits as before movers could be stopped).
+  struct MoverClock {
+    int64_t ticks = 0;
+    int direction = 1;
+    std::optional<int64_t> targetTicks;  // Goto
+  };
+  void advanceMover(uint32_t entity);
+
   glm::mat4 poseOf(uint32_t entity) const;  // from the mover time or interactable value
   void place(uint32_t entity);              // updates collision and the changed list
   std::optional<uint32_t> pick() const;
@@ -74,6 +102,9 @@ class World {
   uint64_t tick_ = 0;
   std::vector<float> values_;           // per entity: Rotate angle / Slide offset
   std::vector<uint8_t> lightsEnabled_;  // per light
+  std::vector<MoverClock> movers_;      // per entity (used by movers only)
+  std::vector<uint8_t> visible_;        // per entity
+  std::vector<uint8_t> locked_;         // per entity
   std::vector<uint32_t> changed_;
   std::optional<uint32_t> picked_;
   std::optional<uint32_t> held_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include <imgui.h>
@@ -59,6 +60,15 @@ void drawAuthorOverlay(const PlayedLevel& played) {
     for (const game::GoalProgress& goal : simulation.rules().progress())
       ImGui::Text("%s  %.4f%s", goal.label.c_str(), double(goal.progress),
                   goal.met ? " (met)" : "");
+    const game::Logic& logic = simulation.logic();
+    for (size_t i = 0; i < logic.ruleCount(); ++i) {
+      const std::vector<uint64_t>& firings = logic.firings(i);
+      ImGui::Text("rule %s  %s, fired %zu%s", logic.ruleId(i).c_str(),
+                  logic.holding(i) ? "holds" : "does not hold", firings.size(),
+                  firings.empty()
+                      ? ""
+                      : (" (last on tick " + std::to_string(firings.back()) + ")").c_str());
+    }
   }
   ImGui::End();
 }
@@ -142,6 +152,13 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
                    ImVec2(position.x - ImGui::CalcTextSize(text.c_str()).x, position.y - size / 2),
                    white, text, size);
     }
+  }
+  // A message a level rule shows, centred below the focus region.
+  if (const std::optional<std::string> message = simulation.logic().message(simulation.tick())) {
+    const float width =
+        std::min(ImGui::CalcTextSize(message->c_str()).x * 1.2f, picture.width * 0.8f);
+    shadowedText(list, ImVec2(picture.x + (picture.width - width) / 2, at(0, 0.68f).y),
+                 colour(240, 228, 66), *message, size * 1.2f, picture.width * 0.8f);
   }
   const game::Outcome outcome = simulation.outcome();
   if (outcome != game::Outcome::Playing) {

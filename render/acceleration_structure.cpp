@@ -251,9 +251,15 @@ TopLevel::TopLevel(const Context& context, std::span<const TlasInstance> instanc
   context.submitAndWait([&](VkCommandBuffer commands) { record(commands, false); });
 }
 
+void TopLevel::setVisible(uint32_t instance, bool visible) {
+  instances_[instance].mask = visible ? masks_[instance] : 0;
+}
+
 void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
   instances_.clear();
+  masks_.clear();
   for (const TlasInstance& instance : instances) {
+    masks_.push_back(uint8_t(instance.mask & 0xFF));
     VkAccelerationStructureInstanceKHR record{};
     record.transform = toRowMajor3x4(instance.objectToWorld);
     record.instanceCustomIndex = instance.customIndex & 0xFFFFFF;

@@ -71,6 +71,9 @@ class TopLevel {
   // The caller makes sure the GPU no longer reads the previous frame's instances.
   void recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4> objectToWorld);
 
+  // Mask 0 (no ray sees it) or the instance's own mask again; the next recordUpdate applies it.
+  void setVisible(uint32_t instance, bool visible);
+
   const AccelerationStructure& structure() const { return structure_; }
   uint32_t instanceCount() const { return instanceCount_; }
 
@@ -81,6 +84,7 @@ class TopLevel {
   const Context* context_;
   uint32_t instanceCount_ = 0;
   std::vector<VkAccelerationStructureInstanceKHR> instances_;
+  std::vector<uint8_t> masks_;  // each instance's own mask, for when it is shown again
   Buffer instanceBuffer_;
   Buffer scratch_;
   VkDeviceAddress scratchAddress_ = 0;  // aligned for the device

@@ -500,6 +500,13 @@ void Renderer::moveRenderOrigin(const glm::dvec3& origin) {
   writeProbePoints();
 }
 
+void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
+  if (instance >= topLevel_->instanceCount())
+    throw RenderError("setInstanceVisible: no such instance");
+  topLevel_->setVisible(instance, visible);
+  tlasStale_ = true;
+}
+
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   if (light >= gpuLights_.size()) throw RenderError("setLightEnabled: no such light");
   gpuLights_[light].directionEnabled.w = enabled ? 1.0f : 0.0f;

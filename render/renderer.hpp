@@ -82,6 +82,8 @@ class Renderer {
 
   // Turns a light on or off from the next frame (switches).
   void setLightEnabled(uint32_t light, bool enabled);
+  // A hidden instance is seen by no ray (camera, shadow, glass, mirror or probe).
+  void setInstanceVisible(uint32_t instance, bool visible);
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }

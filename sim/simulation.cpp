@@ -33,6 +33,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
       world_(level),
       layout_(game::probeLayout(level)),
       rules_(level, layout_),
+      logic_(level, layout_),
       renderer_(std::make_unique<render::Renderer>(context, compiler, sceneFor(level, layout_),
                                                    rendererOptions(options))) {
   for (const game::ExposureProbe& probe : layout_.exposure) {
@@ -42,6 +43,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
             : std::vector<game::SurfaceSample>{});
   }
   for (const scene::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  visibleStates_.assign(level.entities.size(), true);
   if (options_.verticalFovDegrees) world_.setVerticalFovDegrees(*options_.verticalFovDegrees);
   transformsChanged_ = !world_.changedEntities().empty();
   // Probe frame 0 shows the world before the first tick.
@@ -71,6 +73,12 @@ void Simulation::syncRenderer() {
     lightStates_[light] = enabled;
     renderer_->setLightEnabled(light, enabled);
   }
+  for (uint32_t entity = 0; entity < visibleStates_.size(); ++entity) {
+    const bool visible = world_.visible(entity);
+    if (visible == visibleStates_[entity]) continue;
+    visibleStates_[entity] = visible;
+    renderer_->setInstanceVisible(entity, visible);
+  }
 }
 
 game::ProbeReadings Simulation::renderProbeFrame() {
@@ -82,10 +90,13 @@ game::ProbeReadings Simulation::renderProbeFrame() {
     const scene::LightDesc& light = level_.lights[probe.light];
     scene::ExposureProbeDesc desc;
     desc.light = probe.light;
-    desc.points = probe.target == game::ExposureProbe::Target::Entity
-                      ? game::sensorExposurePoints(sensorSamples_[i],
-                                                   world_.entityTransform(probe.entity), light)
-                      : game::playerExposurePoints(world_.feetPosition(), light);
+    // A hidden sensor sees nothing: it reads 0.
+    if (probe.target == game::ExposureProbe::Target::Player) {
+      desc.points = game::playerExposurePoints(world_.feetPosition(), light);
+    } else if (world_.visible(probe.entity)) {
+      desc.points = game::sensorExposurePoints(sensorSamples_[i],
+                                               world_.entityTransform(probe.entity), light);
+    }
     request.exposure.push_back(std::move(desc));
   }
   renderer_->setProbes(request);
@@ -129,7 +140,11 @@ void Simulation::step(const game::TickInput& input) {
     inFlight_.pop_front();
     arrivedThisTick_ = true;
   }
-  rules_.update(now, world_, arrivedThisTick_ ? &*latest_ : nullptr);
+  const game::ProbeReadings* arrived = arrivedThisTick_ ? &*latest_ : nullptr;
+  logic_.update(now, world_, arrived);
+  rules_.update(now, world_, arrived);
+  if (const std::optional<game::Outcome> decided = logic_.outcome())
+    rules_.decide(*decided, logic_.outcomeTick(), logic_.reason());
 }
 
 const std::vector<uint8_t>& Simulation::renderPicture() {

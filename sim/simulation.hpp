@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "game/level.hpp"
+#include "game/logic.hpp"
 #include "game/probe_points.hpp"
 #include "game/probes.hpp"
 #include "game/replay.hpp"
@@ -48,6 +49,7 @@ class Simulation {
   game::Outcome outcome() const;
   const game::World& world() const { return world_; }
   const game::Rules& rules() const { return rules_; }
+  const game::Logic& logic() const { return logic_; }
   const game::ProbeLayout& layout() const { return layout_; }
   // The newest readings the rules have, and whether they arrived on this tick.
   const std::optional<game::ProbeReadings>& latestReadings() const { return latest_; }
@@ -69,9 +71,11 @@ class Simulation {
   game::World world_;
   game::ProbeLayout layout_;
   game::Rules rules_;
+  game::Logic logic_;
   std::unique_ptr<render::Renderer> renderer_;
   std::vector<std::vector<game::SurfaceSample>> sensorSamples_;  // per exposure probe
   std::vector<bool> lightStates_;
+  std::vector<bool> visibleStates_;         // per entity, as the renderer last got them
   bool transformsChanged_ = false;          // since the renderer last got the entities' transforms
   std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
   std::deque<game::ProbeReadings> inFlight_;

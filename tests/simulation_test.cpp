@@ -65,3 +65,42 @@ TEST_F(SimulationTest, the_same_inputs_give_the_same_readings_and_states) {
 }
 
 }  // namespace
+
+// A hidden entity is seen by no ray: the orb drops out of the focus probe, and the slab that
+// shaded the sensor stops casting its shadow (docs/LEVELS.md, "Logic").
+TEST_F(SimulationTest, a_hidden_entity_leaves_camera_rays_and_shadow_rays) {
+  const game::Level level = game::parseLevel(R"({
+    "format": 1, "name": "Hide",
+    "camera": { "position": [0, 1.65, 8] },
+    "materials": { "paint": {} },
+    "meshes": { "floor": { "box": { "size": [40, 1, 40] } }, "ball": { "sphere": { "radius": 0.5 } },
+                "plate": { "box": { "size": [1, 0.05, 1] } }, "slab": { "box": { "size": [2, 0.1, 2] } } },
+    "entities": {
+      "floor": { "mesh": "floor", "material": "paint", "position": [0, -0.5, 0] },
+      "orb": { "mesh": "ball", "material": "paint", "position": [0, 1.65, 6] },
+      "plate": { "mesh": "plate", "material": "paint", "position": [6, 0.03, 0] },
+      "slab": { "mesh": "slab", "material": "paint", "position": [6, 1.5, 0] }
+    },
+    "lights": { "lamp": { "type": "point", "position": [6, 3, 0], "intensity": 5 } },
+    "logic": {
+      "watch": { "when": { "type": "focus", "orb": "orb" }, "then": [{ "do": "message", "text": "seen" }] },
+      "lit": { "when": { "type": "lit", "sensor": "plate", "light": "lamp" }, "then": [{ "do": "message", "text": "lit" }] },
+      "hide": { "when": { "type": "timer", "seconds": 0.5 },
+                "then": [{ "do": "hide", "entity": "orb" }, { "do": "hide", "entity": "slab" }] }
+    } })",
+                                             "hide.json");
+  sim::Simulation simulation(context(), compiler(), level, {64, 36, 4, 2});
+  ASSERT_EQ(simulation.layout().focus.size(), 1u);
+  ASSERT_EQ(simulation.layout().exposure.size(), 1u);
+  auto runUntil = [&](uint64_t tick) {
+    while (simulation.tick() < tick) simulation.step({});
+  };
+  runUntil(24);  // readings of the world before the rule fired on tick 30
+  EXPECT_EQ(simulation.latestReadings()->focusCoverage[0], 1.0f);
+  EXPECT_EQ(simulation.latestReadings()->exposure[0], 0.0f);
+  EXPECT_EQ(simulation.logic().firings(0), std::vector<uint64_t>{8});  // the first readings
+  runUntil(100);
+  EXPECT_EQ(simulation.latestReadings()->focusCoverage[0], 0.0f);
+  EXPECT_GT(simulation.latestReadings()->exposure[0], 0.99f);
+  EXPECT_EQ(simulation.logic().firings(1).size(), 1u);
+}

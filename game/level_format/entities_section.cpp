@@ -50,7 +50,8 @@ uint32_t modelMaterial(LevelReader& reader, uint32_t mesh, const std::string& en
 
 Mover readMover(const LevelReader& reader, const OrderedJson& mover, const std::string& pointer,
                 const Entity& entity) {
-  reader.checkKeys(mover, pointer, {"duration_seconds", "repeat", "easing", "keyframes"},
+  reader.checkKeys(mover, pointer,
+                   {"duration_seconds", "repeat", "easing", "keyframes", "starts_playing"},
                    {"keyframes"});
   Mover result;
   result.durationSeconds =
@@ -59,6 +60,7 @@ Mover readMover(const LevelReader& reader, const OrderedJson& mover, const std::
       reader.readOptionalChoice(mover, "repeat", pointer, {"once", "loop", "ping_pong"}, 1));
   result.easing = static_cast<Mover::Easing>(reader.readOptionalChoice(
       mover, "easing", pointer, {"linear", "smooth", "ease_in", "ease_out"}, 0));
+  result.startsPlaying = reader.readOptionalBool(mover, "starts_playing", pointer, true);
   const OrderedJson& keyframes = mover["keyframes"];
   const std::string keyframesPointer = childPointer(pointer, "keyframes");
   if (!keyframes.is_array()) {

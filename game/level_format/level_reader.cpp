@@ -12,8 +12,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr std::array<IdKind, 4> kIdKinds{IdKind::Material, IdKind::Mesh, IdKind::Entity,
-                                         IdKind::Light};
+constexpr std::array<IdKind, 5> kIdKinds{IdKind::Material, IdKind::Mesh, IdKind::Entity,
+                                         IdKind::Light, IdKind::Rule};
 
 bool isValidId(const std::string& id) {
   return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
@@ -38,6 +38,8 @@ const char* nounOf(IdKind kind) {
       return "entity";
     case IdKind::Light:
       return "light";
+    case IdKind::Rule:
+      return "rule";
   }
   return "";
 }
@@ -52,8 +54,14 @@ const char* pluralOf(IdKind kind) {
       return "entities";
     case IdKind::Light:
       return "lights";
+    case IdKind::Rule:
+      return "rules";
   }
   return "";
+}
+
+const char* sectionOf(IdKind kind) {
+  return kind == IdKind::Rule ? "logic" : pluralOf(kind);
 }
 
 std::string withArticle(const std::string& noun) {
@@ -73,13 +81,14 @@ void LevelReader::declareIds(const OrderedJson& section, const std::string& poin
   const std::map<IdKind, std::size_t> limits{{IdKind::Material, kMaxMaterials},
                                              {IdKind::Mesh, kMaxMeshes},
                                              {IdKind::Entity, kMaxEntities},
-                                             {IdKind::Light, kMaxLights}};
+                                             {IdKind::Light, kMaxLights},
+                                             {IdKind::Rule, kMaxRules}};
   const std::size_t limit = limits.at(kind);
   if (section.size() > limit) {
     failValue(pointer, std::to_string(section.size()) + " " + plural + ", more than the limit of " +
                            std::to_string(limit));
   }
-  if (section.empty() && kind != IdKind::Light) {
+  if (section.empty() && kind != IdKind::Light && kind != IdKind::Rule) {
     failValue(pointer, "a level needs at least one " + noun + ", got {}");
   }
   for (const auto& item : section.items()) {
@@ -135,7 +144,7 @@ void LevelReader::failDuplicateKey(const JsonPositions::DuplicateKey& duplicate)
   const std::string key = duplicate.pointer.substr(slash + 1);
   std::string what = "duplicate key";
   for (const IdKind kind : kIdKinds) {
-    if (objectPointer == std::string("/") + pluralOf(kind)) {
+    if (objectPointer == std::string("/") + sectionOf(kind)) {
       what = std::string("duplicate ") + nounOf(kind) + " id";
     }
   }

@@ -32,6 +32,8 @@ inline constexpr std::size_t kMaxTriangles = 2'000'000;
 inline constexpr std::size_t kMinKeyframes = 2;
 inline constexpr std::size_t kMaxKeyframes = 256;
 inline constexpr std::size_t kMaxGoalChildren = 16;
+inline constexpr std::size_t kMaxRules = 256;
+inline constexpr std::size_t kMaxActions = 64;
 // Not in the format's limits: keeps the recursive goal reader off deep stacks.
 inline constexpr int kMaxGoalDepth = 8;
 inline constexpr std::size_t kMaxNameCharacters = 80;
@@ -52,10 +54,12 @@ inline constexpr NumberRule kLength{0.0, false, kMaxCoordinate, true, kCoordinat
 inline constexpr NumberRule kIntensity{0.0, true, kMaxIntensity, true, kIntensityLimit};
 
 // The kinds of id a level declares; references name one of them.
-enum class IdKind { Material, Mesh, Entity, Light };
+enum class IdKind { Material, Mesh, Entity, Light, Rule };
 
 const char* nounOf(IdKind kind);
 const char* pluralOf(IdKind kind);
+// The top-level key of the section that declares ids of `kind` ("logic" for rules).
+const char* sectionOf(IdKind kind);
 // "a mesh", "an entity".
 std::string withArticle(const std::string& noun);
 

@@ -28,6 +28,9 @@ Entity readEntity(LevelReader& reader, const std::string& id, const OrderedJson&
                   const std::string& pointer, Level& level);
 Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::string& pointer,
               int depth);
+// The "logic" section; read last, as its rules refer to every other kind of id.
+void readLogic(LevelReader& reader, const OrderedJson& logic, const std::string& pointer,
+               Level& level);
 std::vector<LoseCondition> readLoseConditions(const LevelReader& reader, const OrderedJson& lose,
                                               const std::string& pointer);
 
