@@ -271,12 +271,26 @@ int commandReplay(const Options& options) {
   if (options.positional.empty()) throw UsageError("replay: expected replay files");
   if (options.trace && options.positional.size() != 1)
     throw UsageError("replay: --trace takes exactly one replay file");
-  // Every file and its level are read and checked before anything runs.
+  // Every file and its level are read and checked before anything runs; each bad one is
+  // reported, and then nothing runs.
   std::vector<game::Replay> replays;
   std::vector<game::Level> levels;
+  std::vector<std::string> problems;
   for (const std::string& file : options.positional) {
-    replays.push_back(game::loadReplay(file));
-    levels.push_back(loadReplayLevel(replays.back()));
+    try {
+      game::Replay replay = game::loadReplay(file);
+      levels.push_back(loadReplayLevel(replay));
+      replays.push_back(std::move(replay));
+    } catch (const game::ReplayError& error) {
+      problems.push_back(error.what());
+    }
+  }
+  if (problems.size() == 1) throw game::ReplayError(problems.front());
+  if (!problems.empty()) {
+    for (const std::string& problem : problems) std::fprintf(stderr, "%s\n", problem.c_str());
+    std::fprintf(stderr, "%zu of %zu replays are malformed; none was run\n", problems.size(),
+                 options.positional.size());
+    return 1;
   }
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());

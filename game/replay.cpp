@@ -195,7 +195,7 @@ class ReplayParser {
 
   void readFiredExpectations(const Json& fired, Replay& replay) const {
     if (!fired.is_array()) fail("/expect/fired", "expected an array");
-    const int64_t last = int64_t(replay.ticks) - 1;
+    const int64_t last = int64_t(replay.ticks);
     for (size_t i = 0; i < fired.size(); ++i) {
       const std::string pointer = "/expect/fired/" + std::to_string(i);
       const Json& entry = fired[i];
@@ -242,13 +242,14 @@ class ReplayParser {
         fail("/expect/outcome",
              "expected one of \"won\", \"lost\", \"none\", got " + outcome.dump());
     }
+    // The last step reaches tick `ticks`, so an outcome may come on any tick up to it.
     replay.outcome.firstTick = 0;
-    replay.outcome.lastTick = replay.ticks - 1;
+    replay.outcome.lastTick = replay.ticks;
     if (expect.contains("between")) {
       const Json& between = expect["between"];
       if (!between.is_array() || between.size() != 2)
         fail("/expect/between", "expected [first tick, last tick]");
-      const int64_t last = int64_t(replay.ticks) - 1;
+      const int64_t last = int64_t(replay.ticks);
       replay.outcome.firstTick = uint64_t(readInteger(between[0], "/expect/between/0", 0, last));
       replay.outcome.lastTick = uint64_t(
           readInteger(between[1], "/expect/between/1", int64_t(replay.outcome.firstTick), last));

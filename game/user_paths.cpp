@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 
 #include "game/json_document.hpp"
@@ -132,6 +133,23 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
   }
   syncDirectory(directory, file);
   for (const fs::path& made : created) syncDirectory(made.parent_path(), file);
+}
+
+fs::path newScreenshotFile(const fs::path& directory, std::chrono::system_clock::time_point now) {
+  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
+  const auto milliseconds =
+      std::chrono::duration_cast<std::chrono::milliseconds>(now.time_since_epoch()).count() % 1000;
+  std::tm local{};
+  localtime_r(&seconds, &local);
+  char stamp[64];
+  std::strftime(stamp, sizeof stamp, "sightline-%Y%m%d-%H%M%S", &local);
+  char name[96];
+  std::snprintf(name, sizeof name, "%s-%03d", stamp, int(milliseconds));
+  fs::path file = directory / (std::string(name) + ".png");
+  std::error_code error;
+  for (int copy = 2; fs::exists(file, error); ++copy)
+    file = directory / (std::string(name) + "-" + std::to_string(copy) + ".png");
+  return file;
 }
 
 std::optional<std::string> readUserFile(const fs::path& file, std::size_t maxBytes) {

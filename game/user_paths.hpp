@@ -1,6 +1,7 @@
 #pragma once
 // The player's own files (settings.json, progress.json): where they live (the XDG base
 // directory spec), how they are written safely and read with a size cap.
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -32,6 +33,12 @@ std::filesystem::path progressFile();
 // renames it over `file`, then flushes the directory (and the parents of any directories it had
 // to create), so the new file is on disk when this returns. Throws UserFileError.
 void writeFileAtomically(const std::filesystem::path& file, const std::string& contents);
+
+// A screenshot's file in `directory` named after `now` to the millisecond
+// ("sightline-20261125-121530-042.png", local time), with "-2", "-3", ... added when a file of
+// that name exists already, so no screenshot overwrites another.
+std::filesystem::path newScreenshotFile(const std::filesystem::path& directory,
+                                        std::chrono::system_clock::time_point now);
 
 // The whole file, std::nullopt when it does not exist; throws UserFileError when it exists but
 // cannot be read (a directory, no permission) or is larger than `maxBytes`.

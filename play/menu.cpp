@@ -8,6 +8,7 @@
 #include "game/level_loader.hpp"
 #include "game/user_paths.hpp"
 #include "play/level_flow.hpp"
+#include "play/level_list.hpp"
 #include "render/presenter.hpp"
 
 namespace play {
@@ -16,18 +17,12 @@ namespace fs = std::filesystem;
 namespace {
 
 void drawLevelList(Menu& menu, const fs::path& playedFile, const std::vector<fs::path>& levels) {
-  std::vector<std::string> order;
-  for (const fs::path& file : levels) order.push_back(file.filename().string());
-  for (size_t i = 0; i < levels.size(); ++i) {
-    const bool won = menu.progress.completed.contains(order[i]);
-    const bool open = game::unlocked(menu.progress, order, order[i]);
-    const bool current = fs::weakly_canonical(levels[i]) == fs::weakly_canonical(playedFile);
-    const std::string label = std::to_string(i + 1) + ". " + menu.levelNames[i] +
-                              (won    ? "   [won]"
-                               : open ? ""
-                                      : "   (locked)");
-    ImGui::BeginDisabled(!open);
-    if (ImGui::Selectable(label.c_str(), current)) menu.pendingLevel = levels[i];
+  const std::vector<LevelListEntry> entries =
+      levelListEntries(menu.progress, levels, menu.levelNames, playedFile);
+  for (size_t i = 0; i < entries.size(); ++i) {
+    ImGui::BeginDisabled(!entries[i].selectable);
+    if (ImGui::Selectable(entries[i].label.c_str(), entries[i].current))
+      menu.pendingLevel = levels[i];
     ImGui::EndDisabled();
   }
   if (!menu.confirmReset) {

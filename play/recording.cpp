@@ -1,7 +1,7 @@
 #include "play/recording.hpp"
 
+#include <chrono>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <stdexcept>
 #include <system_error>
@@ -67,12 +67,10 @@ bool saveScreenshot(render::Presenter& presenter) {
   const fs::path directory = game::dataDirectory() / "screenshots";
   std::error_code error;
   fs::create_directories(directory, error);
-  char name[64];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(name, sizeof name, "sightline-%Y%m%d-%H%M%S.png", std::localtime(&now));
+  const fs::path file = game::newScreenshotFile(directory, std::chrono::system_clock::now());
   try {
-    render::writePng(directory / name, *image);
-    std::printf("screenshot saved to %s\n", (directory / name).c_str());
+    render::writePng(file, *image);
+    std::printf("screenshot saved to %s\n", file.c_str());
   } catch (const std::exception& failure) {
     std::fprintf(stderr, "screenshot not saved: %s\n", failure.what());
   }

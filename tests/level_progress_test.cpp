@@ -347,6 +347,24 @@ TEST_F(AtomicSave, a_failed_rename_keeps_the_target_and_removes_the_temporary_fi
 
 // ----- where the files live -----
 
+TEST_F(AtomicSave, screenshots_taken_within_one_millisecond_do_not_overwrite_each_other) {
+  const fs::path directory = root_ / "screenshots";
+  fs::create_directories(directory);
+  const auto now = std::chrono::system_clock::now();
+  std::vector<fs::path> files;
+  for (int shot = 0; shot < 3; ++shot) {
+    files.push_back(game::newScreenshotFile(directory, now));
+    test::writeFile(files.back(), "png");
+  }
+  EXPECT_NE(files[0], files[1]);
+  EXPECT_NE(files[1], files[2]);
+  EXPECT_EQ(files[1].filename().string(),
+            files[0].stem().string() + "-2.png");  // the same moment, numbered
+  // A millisecond later is a name of its own.
+  EXPECT_NE(game::newScreenshotFile(directory, now + std::chrono::milliseconds(1)).stem(),
+            files[0].stem());
+}
+
 TEST(UserPaths, xdg_variables_win_when_absolute) {
   const ScopedEnvironment home("HOME", "/home/player");
   const ScopedEnvironment config("XDG_CONFIG_HOME", "/xdg/config");
