@@ -16,6 +16,7 @@ constexpr double kTickSeconds = game::Rules::TICK_SECONDS;
 constexpr float kStickDegreesPerSecond = 150.0f;
 constexpr float kStickDeadZone = 0.2f;
 constexpr uint32_t kWheelAdjustTicks = 6;  // one wheel notch adjusts for 0.1 s
+constexpr int kCaptureSettlingFrames = 2;  // frames after capturing the mouse with no look
 
 void onKey(GLFWwindow* window, int key, int, int action, int) {
   if (action == GLFW_PRESS)
@@ -126,11 +127,18 @@ void setMouseCaptured(GLFWwindow* window, MouseLook& look, bool captured) {
     glfwSetInputMode(window, GLFW_RAW_MOUSE_MOTION, GLFW_TRUE);
   glfwGetCursorPos(window, &look.cursorX, &look.cursorY);  // no jump from where the cursor was
   look.pending = glm::vec2(0.0f);
+  look.settlingFrames = captured ? kCaptureSettlingFrames : 0;
 }
 
 void gatherMouseLook(GLFWwindow* window, MouseLook& look, const game::Settings& settings) {
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(window, &x, &y);
+  if (look.settlingFrames > 0) {
+    --look.settlingFrames;
+    look.cursorX = x;
+    look.cursorY = y;
+    return;
+  }
   // Right turns right (negative yaw), up looks up (positive pitch).
   look.pending += glm::vec2(-float(x - look.cursorX),
                             -float(y - look.cursorY) * (settings.invertY ? -1.0f : 1.0f)) *

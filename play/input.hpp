@@ -50,6 +50,9 @@ game::TickInput heldInput(GLFWwindow* window, const KeyCodes& keyCodes);
 struct MouseLook {
   glm::vec2 pending{0.0f};  // yaw, pitch degrees from the mouse since the last tick
   double cursorX = 0.0, cursorY = 0.0;
+  // Frames whose cursor movement is not look: GLFW centres a newly captured cursor, and on X11
+  // that warp shows up as movement a frame or two later, by half the window at some sizes.
+  int settlingFrames = 0;
 };
 
 // Playing captures the mouse for looking; paused gives it back. Either way looking starts
