@@ -106,7 +106,7 @@ LevelSwitch measureLevelSwitch(const render::Context& context, render::ShaderCom
                                const fs::path& levelFile, uint32_t width, uint32_t height) {
   LevelSwitch result;
   const Clock::time_point start = Clock::now();
-  const game::Level level = game::loadLevel(levelFile);
+  const game::Level level = game::loadLevel(levelFile, levelLoadOptions());
   result.loadMs = millisecondsSince(start);
   const Clock::time_point buildStart = Clock::now();
   sim::SimulationOptions simulationOptions;
@@ -246,7 +246,7 @@ int commandBench(const Options& options) {
               "all ms", "own/all", "switch ms", "trace Mr/s", "Embree", "/Embree");
   std::vector<BenchRow> rows;
   for (const fs::path& levelFile : levels) {
-    const game::Level level = game::loadLevel(levelFile);
+    const game::Level level = game::loadLevel(levelFile, levelLoadOptions());
     std::optional<reference::EmbreeTracer> tracer;
     if (options.embreeFrames > 0) {
       const scene::SceneDesc scene = game::buildSceneDesc(level);

@@ -24,7 +24,7 @@ int commandValidate(const Options& options) {
       continue;
     }
     try {
-      const game::Level level = game::loadLevel(file);
+      const game::Level level = game::loadLevel(file, levelLoadOptions());
       std::printf("%s: ok (%zu entities, %zu meshes, %zu lights)\n", file.c_str(),
                   level.entities.size(), level.meshes.size(), level.lights.size());
     } catch (const game::LevelError& error) {
@@ -54,7 +54,7 @@ namespace app {
 
 int commandInfo(const Options& options) {
   if (options.positional.size() != 1) throw UsageError("info: expected one level file");
-  const game::Level level = game::loadLevel(options.positional[0]);
+  const game::Level level = game::loadLevel(options.positional[0], levelLoadOptions());
   const game::LevelFeatures features = game::levelFeatures(level);
   std::printf("%s (%s)\n", level.name.c_str(), level.file.c_str());
   if (!level.author.empty()) std::printf("  author: %s\n", level.author.c_str());

@@ -46,6 +46,7 @@ play::PlayOptions playOptions(const Options& options) {
   playing.hudOff = options.hudOff;
   playing.record = options.record;
   playing.capture = options.capture;
+  playing.levelLoading = levelLoadOptions();
   return playing;
 }
 

@@ -188,7 +188,7 @@ void writePlot(const fs::path& file, const std::vector<Row>& rows, const std::st
 int commandBenchQuality(const Options& options) {
   if (options.positional.size() != 1) throw UsageError("bench-quality: expected one level file");
   const fs::path levelFile = options.positional[0];
-  const game::Level level = game::loadLevel(levelFile);
+  const game::Level level = game::loadLevel(levelFile, levelLoadOptions());
   QualityBench bench(level, options);
   const uint32_t width = options.width, height = options.height;
   const uint32_t referenceSamples = options.samplesPerPixel;

@@ -64,7 +64,7 @@ void printWarnings(const game::Level& level) {
 
 // Renders a level headless, writes the PNG, prints timing. Returns the exit code.
 int renderLevel(const fs::path& levelFile, const Options& options, const fs::path& out) {
-  const game::Level level = game::loadLevel(levelFile);
+  const game::Level level = game::loadLevel(levelFile, levelLoadOptions());
   printWarnings(level);
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
@@ -92,7 +92,7 @@ int renderLevel(const fs::path& levelFile, const Options& options, const fs::pat
 int watchLevel(const fs::path& levelFile, const Options& options, const fs::path& out) {
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
-  game::LevelWatcher watcher(levelFile);
+  game::LevelWatcher watcher(levelFile, levelLoadOptions());
   std::printf("watching %s and the files it uses; Ctrl-C stops\n", levelFile.c_str());
   std::fflush(stdout);
   uint32_t renders = 0;

@@ -116,7 +116,7 @@ class TraceWriter {
 game::Level loadReplayLevel(const game::Replay& replay) {
   game::Level level;
   try {
-    level = game::loadLevel(replay.level);
+    level = game::loadLevel(replay.level, levelLoadOptions());
   } catch (const game::LevelError& error) {
     throw game::ReplayError(replay.levelPlace + ": level: " + error.what());
   }

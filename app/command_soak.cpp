@@ -76,7 +76,7 @@ int commandSoak(const Options& options) {
   if (!arenaSetting) mallopt(M_ARENA_MAX, 1);
   const uint32_t width = options.sizeGiven ? options.width : 64;
   const uint32_t height = options.sizeGiven ? options.height : 36;
-  const game::Level level = game::loadLevel(levelFile);
+  const game::Level level = game::loadLevel(levelFile, levelLoadOptions());
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   std::printf(

@@ -55,4 +55,10 @@ std::vector<fs::path> shippedLevels(const fs::path& dataRoot) {
   return levels;
 }
 
+game::LevelLoadOptions levelLoadOptions() {
+  game::LevelLoadOptions options;
+  options.assetRoots.push_back(findDataRoot() / "assets");
+  return options;
+}
+
 }  // namespace app

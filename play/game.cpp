@@ -36,7 +36,7 @@ Game::Game(const PlayOptions& options, const game::Settings& settings, std::vect
   glfwGetWindowContentScale(window_, &scaleX, &scaleY);
   // After the callbacks above: ImGui's GLFW backend calls them after its own.
   ui_ = std::make_unique<UiLayer>(context_, window_, presenter_, std::max(1.0f, scaleY));
-  menu_.levelNames = levelDisplayNames(levels_);
+  menu_.levelNames = levelDisplayNames(levels_, options_.levelLoading);
 }
 
 int Game::run(const fs::path& firstLevel) {

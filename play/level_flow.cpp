@@ -61,7 +61,7 @@ void saveWin(const fs::path& levelFile) {
 
 void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& setup) {
   if (played.simulation) finishRecordingOf(played);  // leaving the recorded level
-  auto level = std::make_unique<game::Level>(game::loadLevel(file));
+  auto level = std::make_unique<game::Level>(game::loadLevel(file, setup.options.levelLoading));
   for (const std::string& warning : level->warnings)
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   vkDeviceWaitIdle(setup.context.device());  // the last blit may still read the old image

@@ -89,11 +89,12 @@ void drawSettings(Menu& menu, const PlayedLevel& played, game::Settings& setting
 
 }  // namespace
 
-std::vector<std::string> levelDisplayNames(const std::vector<fs::path>& levels) {
+std::vector<std::string> levelDisplayNames(const std::vector<fs::path>& levels,
+                                           const game::LevelLoadOptions& loading) {
   std::vector<std::string> names;
   for (const fs::path& file : levels) {
     try {
-      names.push_back(game::loadLevel(file).name);
+      names.push_back(game::loadLevel(file, loading).name);
     } catch (const std::exception&) {
       names.push_back(file.stem().string());  // play says what is wrong with it when chosen
     }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "game/level_loader.hpp"
 #include "game/progress.hpp"
 #include "game/settings.hpp"
 #include "play/input.hpp"
@@ -30,7 +31,8 @@ struct Menu {
 };
 
 // The names the level list shows: each level's own, else (it does not load) its file's stem.
-std::vector<std::string> levelDisplayNames(const std::vector<std::filesystem::path>& levels);
+std::vector<std::string> levelDisplayNames(const std::vector<std::filesystem::path>& levels,
+                                           const game::LevelLoadOptions& loading);
 
 // On pausing and on resuming: no key waits to be bound and no reset is asked; opening also
 // reads the saved progress for the level list.

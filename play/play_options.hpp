@@ -5,6 +5,8 @@
 #include <optional>
 #include <utility>
 
+#include "game/level_loader.hpp"
+
 namespace play {
 
 struct PlayOptions {
@@ -14,6 +16,7 @@ struct PlayOptions {
   bool hudOff = false;                           // no heads-up display or text over the picture
   std::optional<std::filesystem::path> record;   // write the first level's run as a replay
   std::optional<std::filesystem::path> capture;  // the last frame's window image (PNG)
+  game::LevelLoadOptions levelLoading;           // where "assets/" paths lead
 };
 
 }  // namespace play

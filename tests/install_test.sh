@@ -22,6 +22,13 @@ unset SIGHTLINE_DATA_DIR
   { echo "FAIL: installed render"; exit 1; }
 [[ -s "$prefix/x.png" ]] || { echo "FAIL: installed render wrote no $prefix/x.png"; exit 1; }
 
+# A level copied out of levels/ (a player's own folder) still finds the game's assets: a path
+# starting with "assets/" names the installed asset directory wherever the level is.
+mkdir -p "$prefix/my levels"
+cp "$level" "$prefix/my levels/copy.json"
+"$prefix/bin/sightline" validate "$prefix/my levels/copy.json" ||
+  { echo "FAIL: a copied level outside levels/ cannot use assets/"; exit 1; }
+
 # The build tree's shaders would also be found (the binary knows its source directory), so prove
 # the installed ones are read: break one and the render must fail naming it. A private shader
 # cache keeps the good compile from being reused.
