@@ -1,0 +1,128 @@
+#include "game/gltf_material.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+#include "game/gltf_checks.hpp"
+#include "game/texture_file.hpp"
+
+namespace game::gltf {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Maps glTF's metallic-roughness material onto ours and decodes the textures it uses.
+class MaterialMapper {
+ public:
+  MaterialMapper(const tinygltf::Model& model, const fs::path& file,
+                 std::vector<std::string>& warnings)
+      : model_(model), file_(file), warnings_(warnings) {}
+
+  GltfMaterial map(int materialIndex) {
+    const tinygltf::Material& material = model_.materials[static_cast<std::size_t>(materialIndex)];
+    label_ = material.name.empty() ? "material " + std::to_string(materialIndex)
+                                   : "material \"" + material.name + "\"";
+    const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+    GltfMaterial result;
+    result.baseColor = factors<3>(pbr.baseColorFactor, "baseColorFactor", result.baseColor);
+    result.roughness = factor(pbr.roughnessFactor, "roughnessFactor");
+    result.specular = 0.04f + 0.96f * factor(pbr.metallicFactor, "metallicFactor");
+    result.emissive = factors<3>(material.emissiveFactor, "emissiveFactor", result.emissive);
+    if (pbr.baseColorTexture.index >= 0) {
+      result.colorTexture =
+          texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture",
+                  /*srgb=*/true);
+    }
+    if (material.normalTexture.index >= 0) {
+      result.normalTexture = texture(material.normalTexture.index, material.normalTexture.texCoord,
+                                     "normalTexture", /*srgb=*/false);
+    }
+    return result;
+  }
+
+ private:
+  // glTF factors lie in [0, 1]; values outside are clamped rather than refused, as viewers do.
+  float factor(double value, const std::string& name) const {
+    if (!std::isfinite(value)) fail(file_, label_ + " " + name + " is not a finite number");
+    return static_cast<float>(std::clamp(value, 0.0, 1.0));
+  }
+
+  template <int N>
+  glm::vec<N, float> factors(const std::vector<double>& values, const std::string& name,
+                             const glm::vec<N, float>& fallback) const {
+    if (values.empty()) return fallback;
+    if (values.size() < N) fail(file_, label_ + " " + name + " has too few components");
+    glm::vec<N, float> result;
+    for (int i = 0; i < N; ++i) result[i] = factor(values[static_cast<std::size_t>(i)], name);
+    return result;
+  }
+
+  scene::TextureDesc texture(int textureIndex, int texCoord, const std::string& role, bool srgb) {
+    const std::string where = label_ + " " + role;
+    if (!validIndex(textureIndex, model_.textures)) {
+      fail(file_,
+           where + " refers to texture " + std::to_string(textureIndex) + ", which does not exist");
+    }
+    const int imageIndex = model_.textures[static_cast<std::size_t>(textureIndex)].source;
+    if (!validIndex(imageIndex, model_.images)) {
+      fail(file_, where + " uses texture " + std::to_string(textureIndex) +
+                      ", which has no PNG or JPEG image");
+    }
+    if (texCoord != 0) {
+      warnings_.push_back(file_.string() + ": " + where + " uses TEXCOORD_" +
+                          std::to_string(texCoord) + "; only TEXCOORD_0 is read, so it is used");
+    }
+    const tinygltf::Image& image = model_.images[static_cast<std::size_t>(imageIndex)];
+    const std::string imageLabel =
+        "image " + std::to_string(imageIndex) + (image.uri.empty() ? "" : " \"" + image.uri + "\"");
+    // An external image is named by its path; an embedded one by the model and its index.
+    const std::string name = image.uri.empty()
+                                 ? file_.string() + " image " + std::to_string(imageIndex)
+                                 : (file_.parent_path() / image.uri).lexically_normal().string();
+    const std::span<const uint8_t> bytes = encodedBytes(image, where + " " + imageLabel);
+    try {
+      return decodeTexture(bytes, name, srgb);
+    } catch (const LevelError& error) {
+      fail(file_, where + ": " + error.what());
+    }
+  }
+
+  std::span<const uint8_t> encodedBytes(const tinygltf::Image& image,
+                                        const std::string& label) const {
+    if (image.bufferView < 0) {
+      if (image.image.empty()) fail(file_, label + " was not found or could not be read");
+      return image.image;
+    }
+    if (!validIndex(image.bufferView, model_.bufferViews)) {
+      fail(file_, label + " has no valid buffer view");
+    }
+    const tinygltf::BufferView& view =
+        model_.bufferViews[static_cast<std::size_t>(image.bufferView)];
+    if (!validIndex(view.buffer, model_.buffers)) {
+      fail(file_, label + " uses a buffer view without a valid buffer");
+    }
+    const std::vector<unsigned char>& buffer =
+        model_.buffers[static_cast<std::size_t>(view.buffer)].data;
+    if (view.byteOffset > buffer.size() || view.byteLength > buffer.size() - view.byteOffset) {
+      fail(file_, label + " reads past the end of its buffer");
+    }
+    return {buffer.data() + view.byteOffset, view.byteLength};
+  }
+
+  const tinygltf::Model& model_;
+  const fs::path& file_;
+  std::vector<std::string>& warnings_;
+  std::string label_;  // names the material in messages
+};
+
+}  // namespace
+
+GltfMaterial mapMaterial(const tinygltf::Model& model, const fs::path& file, int materialIndex,
+                         std::vector<std::string>& warnings) {
+  return MaterialMapper(model, file, warnings).map(materialIndex);
+}
+
+}  // namespace game::gltf
