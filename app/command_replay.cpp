@@ -118,14 +118,14 @@ game::Level loadReplayLevel(const game::Replay& replay) {
   try {
     level = game::loadLevel(replay.level, levelLoadOptions());
   } catch (const game::LevelError& error) {
-    throw game::ReplayError(replay.levelPlace + ": level: " + error.what());
+    throw game::ReplayError(replay.levelPlace + ": /level: " + error.what());
   }
   for (const game::FiredExpectation& fired : replay.fired) {
     const bool known = std::any_of(level.rules.begin(), level.rules.end(),
                                    [&](const game::Rule& rule) { return rule.id == fired.rule; });
     if (!known) {
       throw game::ReplayError(fired.ruleAt + ": " + fired.place +
-                              ".rule: the level has no rule \"" + fired.rule + "\"");
+                              "/rule: the level has no rule \"" + fired.rule + "\"");
     }
   }
   return level;

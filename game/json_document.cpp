@@ -52,7 +52,22 @@ struct FirstErrorSax : nlohmann::json_sax<nlohmann::json> {
 JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
   FirstErrorSax sax;
   nlohmann::json::sax_parse(text, &sax);
-  return sax.error;
+  JsonSyntaxError& error = sax.error;
+  error.errorOffset = error.bytesRead == 0 ? 0 : error.bytesRead - 1;
+  // nlohmann says "unexpected '}'; expected string literal" for {"a": 1,}: name the comma.
+  const std::size_t at = error.errorOffset;
+  if (!error.numberTooLarge && at < text.size() && (text[at] == '}' || text[at] == ']')) {
+    std::size_t before = at;
+    while (before > 0 && (text[before - 1] == ' ' || text[before - 1] == '\t' ||
+                          text[before - 1] == '\n' || text[before - 1] == '\r')) {
+      --before;
+    }
+    if (before > 0 && text[before - 1] == ',') {
+      error.errorOffset = before - 1;
+      error.reason = std::string("trailing comma before '") + text[at] + "'; JSON allows none";
+    }
+  }
+  return error;
 }
 
 std::string fileLineColumn(const std::filesystem::path& file, SourcePosition at) {

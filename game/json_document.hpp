@@ -16,9 +16,12 @@ namespace game {
 // for a double (which Json::parse reports without a position).
 struct JsonSyntaxError {
   std::size_t bytesRead = 0;    // as nlohmann counts them: up to and including the offending byte
+  std::size_t errorOffset = 0;  // the byte to point at: the offending one, or a trailing comma
   std::size_t tokenOffset = 0;  // where the last token read starts
   std::string lastToken;
-  std::string reason;  // nlohmann's message without its "[json.exception...] parse error ...: "
+  // nlohmann's message without its "[json.exception...] parse error ...: ", or "trailing comma
+  // before '}'" (or ']') when that is the mistake.
+  std::string reason;
   bool numberTooLarge = false;  // the text is valid JSON up to a number no double can hold
 };
 

@@ -164,32 +164,6 @@ SourcePosition lookup(const std::unordered_map<std::string, SourcePosition>& pos
   }
 }
 
-bool isPlainName(std::string_view key) {
-  return !key.empty() && std::all_of(key.begin(), key.end(), [](char c) {
-    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-           c == '-';
-  });
-}
-
-// A key in double quotes with quotes, backslashes and control characters escaped.
-std::string quoted(std::string_view key) {
-  std::string text = "\"";
-  for (const char c : key) {
-    if (c == '"' || c == '\\') {
-      text += '\\';
-      text += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      static const char* const hex = "0123456789abcdef";
-      text += "\\u00";
-      text += hex[(c >> 4) & 0xF];
-      text += hex[c & 0xF];
-    } else {
-      text += c;
-    }
-  }
-  return text + "\"";
-}
-
 }  // namespace
 
 std::string unescapeJsonPointerToken(std::string_view token) {
@@ -271,7 +245,6 @@ JsonPositions JsonPositions::scan(std::string_view text) {
         scanner.advance();
         scanner.skipWhitespace();
         open.push_back({c == '[', 0, pointer});
-        if (c == '[') result.arrays_.insert(pointer);
         const char closing = c == '[' ? ']' : '}';
         if (scanner.peek() == closing) {
           scanner.advance();
@@ -326,27 +299,6 @@ std::optional<std::string> JsonPositions::pointerOfValueAt(SourcePosition positi
   return std::nullopt;
 }
 
-std::string JsonPositions::dottedPath(const std::string& pointer) const {
-  std::string dotted;
-  std::size_t tokenStart = 1;  // just past a '/'
-  while (tokenStart <= pointer.size()) {
-    std::size_t tokenEnd = pointer.find('/', tokenStart);
-    if (tokenEnd == std::string::npos) tokenEnd = pointer.size();
-    const std::string container = pointer.substr(0, tokenStart - 1);
-    const std::string token = unescapeJsonPointerToken(
-        std::string_view(pointer).substr(tokenStart, tokenEnd - tokenStart));
-    if (arrays_.count(container) != 0) {
-      dotted += "[" + token + "]";
-    } else if (isPlainName(token)) {
-      dotted += (dotted.empty() ? "" : ".") + token;
-    } else {
-      dotted += "[" + quoted(token) + "]";
-    }
-    tokenStart = tokenEnd + 1;
-  }
-  return dotted;
-}
-
 SourcePosition JsonPositions::keyAt(const std::string& pointer) const {
   if (auto found = keys_.find(pointer); found != keys_.end()) return found->second;
   return valueAt(pointer);
@@ -364,10 +316,6 @@ SourcePosition positionOfOffset(std::string_view text, std::size_t offset) {
     }
   }
   return position;
-}
-
-SourcePosition positionOfParseError(std::string_view text, std::size_t parseErrorByte) {
-  return positionOfOffset(text, parseErrorByte == 0 ? 0 : parseErrorByte - 1);
 }
 
 }  // namespace game

@@ -7,7 +7,6 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
-#include <unordered_set>
 
 namespace game {
 
@@ -40,14 +39,8 @@ class JsonPositions {
   // nlohmann could not represent, which it reports by offset only).
   std::optional<std::string> pointerOfValueAt(SourcePosition position) const;
 
-  // `pointer` written the way messages show it: object members joined with '.', array elements
-  // as [index], e.g. "/goal/of/0/orb" -> "goal.of[0].orb"; "" (the root) stays "". Keys that are
-  // not plain names are quoted: entities["a b"].
-  std::string dottedPath(const std::string& pointer) const;
-
  private:
   std::unordered_map<std::string, SourcePosition> values_;
-  std::unordered_set<std::string> arrays_;  // pointers of the arrays, to tell indices from keys
   std::unordered_map<std::string, SourcePosition> keys_;
   std::optional<DuplicateKey> firstDuplicateKey_;
 };
@@ -64,9 +57,5 @@ std::string escapeControlCharacters(std::string_view text);
 
 // Line and column of the byte at zero-based `offset` (clamped to the end of the text).
 SourcePosition positionOfOffset(std::string_view text, std::size_t offset);
-
-// Line and column of a syntax error reported by nlohmann::json::parse_error::byte, which counts
-// the bytes read including the offending one.
-SourcePosition positionOfParseError(std::string_view text, std::size_t parseErrorByte);
 
 }  // namespace game

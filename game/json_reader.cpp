@@ -161,15 +161,14 @@ void JsonReader::failInvalidJson() {
         at, pointer,
         "expected a finite number, got " + error.lastToken + ", which is too large to represent");
   }
-  throw JsonInputError(placeInFile(file_, positionOfParseError(text_, error.bytesRead)) +
+  throw JsonInputError(placeInFile(file_, positionOfOffset(text_, error.errorOffset)) +
                        "invalid JSON: " + error.reason);
 }
 
 void JsonReader::failAt(SourcePosition at, const std::string& pointer,
                         const std::string& message) const {
   // One line whatever the file holds: keys, ids and paths are quoted in messages.
-  throw JsonInputError(
-      escapeControlCharacters(placeInFile(file_, at, positions_.dottedPath(pointer)) + message));
+  throw JsonInputError(escapeControlCharacters(placeInFile(file_, at, pointer) + message));
 }
 
 void JsonReader::failValue(const std::string& pointer, const std::string& message) const {

@@ -8,7 +8,7 @@
 namespace game {
 
 // Thrown for any bad level input. what() is one line:
-// "<file>:<line>:<column>: <json path>: expected <what>, got <what>".
+// "<file>:<line>:<column>: <JSON pointer>: expected <what>, got <what>".
 class LevelError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;

@@ -84,14 +84,14 @@ class ReplayParser {
                         "invalid JSON: the number " + error.lastToken +
                         " is too large to represent");
     }
-    const SourcePosition at = positionOfParseError(text_, error.bytesRead);
+    const SourcePosition at = positionOfOffset(text_, error.errorOffset);
     throw ReplayError(placeInFile(file_, at) + "invalid JSON");
   }
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& message) const {
     // One line whatever the file holds: keys and values are quoted in messages.
     throw ReplayError(escapeControlCharacters(
-        placeInFile(file_, positions_.valueAt(pointer), positions_.dottedPath(pointer)) + message));
+        placeInFile(file_, positions_.valueAt(pointer), pointer) + message));
   }
 
   void require(const Json& object, const std::string& pointer, const std::string& key) const {
@@ -105,9 +105,9 @@ class ReplayParser {
       std::string list;
       for (const std::string& key : allowed) list += (list.empty() ? "\"" : ", \"") + key + "\"";
       const std::string member = pointer + "/" + escapeJsonPointerToken(item.key());
-      throw ReplayError(escapeControlCharacters(
-          placeInFile(file_, positions_.keyAt(member), positions_.dottedPath(pointer)) +
-          "unknown key \"" + item.key() + "\"; allowed keys: " + list));
+      throw ReplayError(
+          escapeControlCharacters(placeInFile(file_, positions_.keyAt(member), pointer) +
+                                  "unknown key \"" + item.key() + "\"; allowed keys: " + list));
     }
   }
 
@@ -202,7 +202,7 @@ class ReplayParser {
       if (!entry.is_object()) fail(pointer, "expected an object");
       checkKeys(entry, pointer, {"rule", "between", "never"});
       FiredExpectation parsed;
-      parsed.place = positions_.dottedPath(pointer);
+      parsed.place = pointer;
       require(entry, pointer, "rule");
       if (!entry["rule"].is_string() || entry["rule"].get<std::string>().empty())
         fail(pointer + "/rule", "expected a rule id");
@@ -263,7 +263,7 @@ class ReplayParser {
         if (!value.is_object()) fail(pointer, "expected an object");
         checkKeys(value, pointer, {"tick", "focus", "exposure", "progress", "range"});
         ValueExpectation parsed;
-        parsed.place = positions_.dottedPath(pointer);
+        parsed.place = pointer;
         parsed.tick = readTick(value, pointer, replay);
         int kinds = 0;
         for (const auto& [key, kind] : {std::pair{"focus", ValueExpectation::Kind::Focus},
@@ -293,7 +293,7 @@ class ReplayParser {
         if (!player.is_object()) fail(pointer, "expected an object");
         checkKeys(player, pointer, {"tick", "feet", "tolerance"});
         PlayerExpectation parsed;
-        parsed.place = positions_.dottedPath(pointer);
+        parsed.place = pointer;
         parsed.tick = readTick(player, pointer, replay);
         require(player, pointer, "feet");
         parsed.feet = readVec3(player["feet"], pointer + "/feet");
@@ -312,7 +312,7 @@ class ReplayParser {
         if (!image.is_object()) fail(pointer, "expected an object");
         checkKeys(image, pointer, {"tick", "png", "max_different_share"});
         ImageCheckpoint parsed;
-        parsed.place = positions_.dottedPath(pointer);
+        parsed.place = pointer;
         parsed.tick = readTick(image, pointer, replay);
         require(image, pointer, "png");
         const std::string png = image["png"].is_string() ? image["png"].get<std::string>() : "";

@@ -39,7 +39,7 @@ std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::
     root = nlohmann::ordered_json::parse(*text);
   } catch (const nlohmann::ordered_json::exception&) {
     const JsonSyntaxError error = firstJsonSyntaxError(*text);
-    messages.push_back(placeInFile(file, positionOfParseError(*text, error.bytesRead)) +
+    messages.push_back(placeInFile(file, positionOfOffset(*text, error.errorOffset)) +
                        "invalid JSON: " + error.reason + "; " + whenIgnored);
     return std::nullopt;
   }
@@ -62,7 +62,7 @@ std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::
   } else if (!versionValue->is_number_integer() || versionValue->get<int64_t>() != version) {
     // A newer game wrote it (or it is damaged): its fields may mean something else.
     const SourcePosition at = opened.positions_.valueAt(versionPointer);
-    messages.push_back(placeInFile(file, at) + versionKey + ": expected version " +
+    messages.push_back(placeInFile(file, at, versionPointer) + "expected version " +
                        std::to_string(version) + ", got " + describeJson(*versionValue) + "; " +
                        whenIgnored);
     return std::nullopt;
@@ -72,7 +72,7 @@ std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::
 
 void UserJsonFile::reportAt(SourcePosition at, const std::string& pointer,
                             const std::string& problem) {
-  messages_->push_back(placeInFile(file_, at, positions_.dottedPath(pointer)) + problem);
+  messages_->push_back(placeInFile(file_, at, pointer) + problem);
 }
 
 void UserJsonFile::reportValue(const std::string& pointer, const std::string& problem) {

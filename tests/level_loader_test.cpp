@@ -707,11 +707,11 @@ TEST(LevelErrors, loader_reports_line_and_column_of_bad_value) {
 }
 )";
   EXPECT_EQ(parseError(text, "levels/03.json"),
-            "levels/03.json:6:48: materials.glass.roughness: expected a number in (0, 1], got "
+            "levels/03.json:6:48: /materials/glass/roughness: expected a number in (0, 1], got "
             "\"1,5\"");
 }
 
-TEST(LevelErrors, paths_are_dotted_with_array_elements_in_brackets) {
+TEST(LevelErrors, paths_are_json_pointers_with_array_elements_as_indices) {
   const std::string text = replaced(kMinimalLevel, R"("lights": {})",
                                     R"("lights": {"sun": {"type": "point", "position": [0, 5, 0],
                                                   "intensity": 1}},
@@ -719,10 +719,17 @@ TEST(LevelErrors, paths_are_dotted_with_array_elements_in_brackets) {
                                   {"type": "focus", "orb": "sun"}]},
   "lose": [{"type": "fall", "below": -5}, {"type": "stealth", "watcher": "sun", "seconds": 0}])");
   EXPECT_EQ(parseError(text),
-            "levels/test.json:11:60: goal.of[1].orb: \"sun\" is a light, "
+            "levels/test.json:11:60: /goal/of/1/orb: \"sun\" is a light, "
             "expected an entity id");
   EXPECT_EQ(parseError(replaced(text, R"("orb": "sun")", R"("orb": "crate")")),
-            "levels/test.json:12:92: lose[1].seconds: expected a number > 0, got 0");
+            "levels/test.json:12:92: /lose/1/seconds: expected a number > 0, got 0");
+}
+
+TEST(LevelErrors, a_trailing_comma_is_named_where_it_is) {
+  EXPECT_EQ(parseError("{\n  \"format\": 1,\n  \"name\": \"x\",\n}", "levels/bad.json"),
+            "levels/bad.json:3:14: invalid JSON: trailing comma before '}'; JSON allows none");
+  EXPECT_EQ(parseError("{\"format\": 1, \"name\": [1, 2, ]}", "levels/bad.json"),
+            "levels/bad.json:1:28: invalid JSON: trailing comma before ']'; JSON allows none");
 }
 
 TEST(LevelErrors, syntax_error_reports_line_and_column_and_nlohmanns_reason) {
@@ -743,11 +750,11 @@ TEST(LevelErrors, unknown_key_suggests_the_nearest_allowed_key) {
     return parseError(replaced(kMinimalLevel, R"({"mesh": "cube", "material": "grey"})", entity));
   };
   EXPECT_EQ(entityError(R"({"mesh": "cube", "material": "grey", "postion": [0, 0, 0]})"),
-            "levels/test.json:7:62: entities.crate: unknown key \"postion\"; did you mean "
+            "levels/test.json:7:62: /entities/crate: unknown key \"postion\"; did you mean "
             "\"position\"?");
   // Case and '_' differences count as near misses whatever their edit distance.
   EXPECT_NE(entityError(R"({"mesh": "cube", "material": "grey", "castsShadow": false})")
-                .find("entities.crate: unknown key \"castsShadow\"; did you mean "
+                .find("/entities/crate: unknown key \"castsShadow\"; did you mean "
                       "\"casts_shadow\"?"),
             std::string::npos);
   EXPECT_NE(entityError(R"({"mesh": "cube", "material": "grey", "Scale": 2})")
@@ -759,7 +766,7 @@ TEST(LevelErrors, unknown_key_without_a_near_miss_lists_the_allowed_keys) {
   const std::string text =
       replaced(kMinimalLevel, R"({"color": [0.5, 0.5, 0.5]})", R"({"paint": [0.5, 0.5, 0.5]})");
   EXPECT_EQ(parseError(text),
-            "levels/test.json:5:26: materials.grey: unknown key \"paint\"; allowed keys: "
+            "levels/test.json:5:26: /materials/grey: unknown key \"paint\"; allowed keys: "
             "\"color\", \"specular\", \"roughness\", \"emissive\", \"emissive_strength\", "
             "\"texture\", \"normal_map\", \"mirror\", \"glass\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("name": "Test")", R"("Name": "Test")")),
@@ -769,71 +776,73 @@ TEST(LevelErrors, unknown_key_without_a_near_miss_lists_the_allowed_keys) {
 TEST(LevelErrors, missing_required_key_points_at_its_object) {
   const std::string text = replaced(kMinimalLevel, R"("camera": {"position": [0, 1, 5]})",
                                     R"("camera": {"fov_degrees": 50})");
-  EXPECT_EQ(parseError(text), "levels/test.json:4:13: camera: missing required key \"position\"");
+  EXPECT_EQ(parseError(text), "levels/test.json:4:13: /camera: missing required key \"position\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("material": "grey")", R"("casts_shadow": true)")),
-            "levels/test.json:7:25: entities.crate: missing required key \"material\" (mesh "
+            "levels/test.json:7:25: /entities/crate: missing required key \"material\" (mesh "
             "\"cube\" is not a glTF model, so the entity must name one)");
 }
 
 TEST(LevelErrors, dangling_ids_suggest_a_near_miss_or_list_the_known_ids) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("mesh": "cube")", R"("mesh": "cub")")),
-            "levels/test.json:7:34: entities.crate.mesh: unknown mesh \"cub\"; did you mean "
+            "levels/test.json:7:34: /entities/crate/mesh: unknown mesh \"cub\"; did you mean "
             "\"cube\"?");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("mesh": "cube")", R"("mesh": "sphere")")),
-            "levels/test.json:7:34: entities.crate.mesh: unknown mesh \"sphere\"; known meshes: "
+            "levels/test.json:7:34: /entities/crate/mesh: unknown mesh \"sphere\"; known meshes: "
             "\"cube\"");
   EXPECT_NE(parseError(replaced(kMinimalLevel, R"("material": "grey")", R"("material": "GREY")"))
-                .find("entities.crate.material: unknown material \"GREY\"; did you mean "
+                .find("/entities/crate/material: unknown material \"GREY\"; did you mean "
                       "\"grey\"?"),
             std::string::npos);
 }
 
 TEST(LevelErrors, reference_to_an_id_of_another_kind_says_what_it_is) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("material": "grey")", R"("material": "cube")")),
-            "levels/test.json:7:54: entities.crate.material: \"cube\" is a mesh, expected a "
+            "levels/test.json:7:54: /entities/crate/material: \"cube\" is a mesh, expected a "
             "material id");
   const std::string withSwitch =
       replaced(kMinimalLevel, R"("material": "grey")",
                R"("material": "grey", "interactable": {"type": "switch", "light": "crate"})");
-  EXPECT_NE(parseError(withSwitch)
-                .find("entities.crate.interactable.light: \"crate\" is an entity, expected a light "
-                      "id"),
-            std::string::npos);
+  EXPECT_NE(
+      parseError(withSwitch)
+          .find("/entities/crate/interactable/light: \"crate\" is an entity, expected a light "
+                "id"),
+      std::string::npos);
   // Lights are optional, so a level may have none to name.
-  EXPECT_NE(parseError(replaced(withSwitch, R"("light": "crate")", R"("light": "lamp")"))
-                .find("entities.crate.interactable.light: unknown light \"lamp\"; the level has no "
-                      "lights"),
-            std::string::npos);
+  EXPECT_NE(
+      parseError(replaced(withSwitch, R"("light": "crate")", R"("light": "lamp")"))
+          .find("/entities/crate/interactable/light: unknown light \"lamp\"; the level has no "
+                "lights"),
+      std::string::npos);
 }
 
 TEST(LevelErrors, duplicate_ids_name_their_kind) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"({"grey": {"color": [0.5, 0.5, 0.5]}})",
                                 R"({"grey": {}, "grey": {}})")),
-            "levels/test.json:5:29: materials: duplicate material id \"grey\"");
+            "levels/test.json:5:29: /materials: duplicate material id \"grey\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("name": "Test")", R"("name": "A", "name": "B")")),
             "levels/test.json:3:16: duplicate key \"name\"");
 }
 
 TEST(LevelErrors, colour_and_tint_errors_say_what_they_expect) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, "[0.5, 0.5, 0.5]", "\"#12345\"")),
-            "levels/test.json:5:35: materials.grey.color: expected a colour: [r, g, b] with "
+            "levels/test.json:5:35: /materials/grey/color: expected a colour: [r, g, b] with "
             "components in [0, 1] or a string \"#rrggbb\", got \"#12345\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, "[0.5, 0.5, 0.5]", "[0.5, 1.5, 0.5]")),
-            "levels/test.json:5:41: materials.grey.color[1]: expected a number in [0, 1], got 1.5");
+            "levels/test.json:5:41: /materials/grey/color/1: expected a number in [0, 1], got 1.5");
   auto materialError = [](const std::string& material) {
     return parseError(replaced(kMinimalLevel, R"({"color": [0.5, 0.5, 0.5]})", material));
   };
   EXPECT_EQ(materialError(R"({"glass": {"tint": "0,5"}})"),
-            "levels/test.json:5:44: materials.grey.glass.tint: expected 3 numbers in [0, 1], got "
+            "levels/test.json:5:44: /materials/grey/glass/tint: expected 3 numbers in [0, 1], got "
             "\"0,5\"");
-  EXPECT_NE(
-      materialError(R"({"glass": {}})").find("materials.grey.glass: missing required key \"tint\""),
-      std::string::npos);
+  EXPECT_NE(materialError(R"({"glass": {}})")
+                .find("/materials/grey/glass: missing required key \"tint\""),
+            std::string::npos);
   EXPECT_NE(materialError(R"({"mirror": {"reflectance": 1.1}})")
-                .find("materials.grey.mirror.reflectance: expected a number in [0, 1], got 1.1"),
+                .find("/materials/grey/mirror/reflectance: expected a number in [0, 1], got 1.1"),
             std::string::npos);
   EXPECT_EQ(materialError(R"({"mirror": {}, "glass": {"tint": [1, 1, 1]}})"),
-            "levels/test.json:5:40: materials.grey: a material is a mirror or glass, not both; "
+            "levels/test.json:5:40: /materials/grey: a material is a mirror or glass, not both; "
             "remove \"mirror\" or \"glass\"");
 }
 
@@ -842,32 +851,32 @@ TEST(LevelErrors, number_rules_name_their_range_and_limit) {
     return parseError(replaced(kMinimalLevel, R"({"position": [0, 1, 5]})", camera));
   };
   EXPECT_NE(cameraError(R"({"position": [0, 1, 5], "fov_degrees": 0})")
-                .find("camera.fov_degrees: expected a number in (0, 179], got 0"),
+                .find("/camera/fov_degrees: expected a number in (0, 179], got 0"),
             std::string::npos);
   EXPECT_NE(cameraError(R"({"position": [0, 1, 5], "pitch_degrees": 90.5})")
-                .find("camera.pitch_degrees: expected a number in [-90, 90], got 90.5"),
+                .find("/camera/pitch_degrees: expected a number in [-90, 90], got 90.5"),
             std::string::npos);
   EXPECT_EQ(cameraError(R"({"position": [0, 250000, 5]})"),
-            "levels/test.json:4:30: camera.position[1]: expected a number in [-100000, 100000], "
+            "levels/test.json:4:30: /camera/position/1: expected a number in [-100000, 100000], "
             "got 250000; positions and sizes are limited to ±100000 m");
   EXPECT_NE(cameraError(R"({"position": [0, 1, 5], "yaw_degrees": 1e300})")
-                .find("camera.yaw_degrees: expected a number, got 1e+300; numbers are stored as "
+                .find("/camera/yaw_degrees: expected a number, got 1e+300; numbers are stored as "
                       "32-bit floats, within ±3.4e38"),
             std::string::npos);
   EXPECT_NE(cameraError(R"({"position": [0, 1]})")
-                .find("camera.position: expected an array of 3 numbers [x, y, z], got [0,1]"),
+                .find("/camera/position: expected an array of 3 numbers [x, y, z], got [0,1]"),
             std::string::npos);
   EXPECT_NE(cameraError(R"({"position": [0, true, 5]})")
-                .find("camera.position[1]: expected a number in [-100000, 100000], got true"),
+                .find("/camera/position/1: expected a number in [-100000, 100000], got true"),
             std::string::npos);
   // JSON has no NaN: the string is a type error.
   EXPECT_NE(cameraError(R"({"position": [0, "NaN", 5]})")
-                .find("camera.position[1]: expected a number in [-100000, 100000], got \"NaN\""),
+                .find("/camera/position/1: expected a number in [-100000, 100000], got \"NaN\""),
             std::string::npos);
   EXPECT_NE(parseError(replaced(kMinimalLevel, R"("lights": {})",
                                 R"("lights": {"l": {"type": "point", "position": [0, 0, 0],
                                                "intensity": 2e9}})"))
-                .find("lights.l.intensity: expected a number in [0, 1000000000], got "
+                .find("/lights/l/intensity: expected a number in [0, 1000000000], got "
                       "2000000000; intensities are limited to 1e9"),
             std::string::npos);
 }
@@ -877,10 +886,10 @@ TEST(LevelErrors, numbers_too_large_for_a_double_are_named_by_their_path) {
     return parseError(replaced(kMinimalLevel, R"({"position": [0, 1, 5]})", camera));
   };
   EXPECT_EQ(cameraError(R"({"position": [0, 1e999, 5]})"),
-            "levels/test.json:4:30: camera.position[1]: expected a finite number, got 1e999, "
+            "levels/test.json:4:30: /camera/position/1: expected a finite number, got 1e999, "
             "which is too large to represent");
   EXPECT_EQ(cameraError(R"({"position": [0, 1, 5], "fov_degrees": -1E+400})"),
-            "levels/test.json:4:52: camera.fov_degrees: expected a finite number, got -1E+400, "
+            "levels/test.json:4:52: /camera/fov_degrees: expected a finite number, got -1E+400, "
             "which is too large to represent");
 }
 
@@ -889,20 +898,20 @@ TEST(LevelErrors, tessellation_counts_must_be_integers_in_range) {
     return parseError(replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", mesh));
   };
   EXPECT_NE(meshError(R"({"sphere": {"radius": 1, "segments": 2.5}})")
-                .find("meshes.cube.sphere.segments: expected an integer in [3, 4096], got 2.5"),
+                .find("/meshes/cube/sphere/segments: expected an integer in [3, 4096], got 2.5"),
             std::string::npos);
   EXPECT_NE(meshError(R"({"sphere": {"radius": 1, "rings": 1}})")
-                .find("meshes.cube.sphere.rings: expected an integer in [2, 2048], got 1"),
+                .find("/meshes/cube/sphere/rings: expected an integer in [2, 2048], got 1"),
             std::string::npos);
   EXPECT_NE(
       meshError(R"({"cylinder": {"radius": 1, "height": 1, "segments": 99999999999999999999}})")
-          .find("meshes.cube.cylinder.segments: expected an integer in [3, 4096]"),
+          .find("/meshes/cube/cylinder/segments: expected an integer in [3, 4096]"),
       std::string::npos);
   EXPECT_NE(meshError(R"({"box": {"size": [1, 0, 1]}})")
-                .find("meshes.cube.box.size[1]: expected a number in (0, 100000], got 0"),
+                .find("/meshes/cube/box/size/1: expected a number in (0, 100000], got 0"),
             std::string::npos);
   EXPECT_NE(meshError(R"({"plane": {"size": [1, 1, 1]}})")
-                .find("meshes.cube.plane.size: expected an array of 2 numbers [width, depth]"),
+                .find("/meshes/cube/plane/size: expected an array of 2 numbers [width, depth]"),
             std::string::npos);
 }
 
@@ -913,7 +922,7 @@ TEST(LevelErrors, triangle_limit_is_checked_before_a_mesh_is_built) {
                                     R"("a": )" + big + R"(, "cube": {"box": {"size": [1, 1, 1]}},
                                      "b": )" +
                                         big);
-  EXPECT_NE(parseError(text).find("meshes.b: this mesh brings the level to 3997708 triangles, "
+  EXPECT_NE(parseError(text).find("/meshes/b: this mesh brings the level to 3997708 triangles, "
                                   "more than the limit of 2000000"),
             std::string::npos);
 }
@@ -923,14 +932,14 @@ TEST(LevelErrors, mesh_must_have_exactly_one_shape) {
     return parseError(replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", mesh));
   };
   EXPECT_EQ(meshError(R"({"box": {"size": [1, 1, 1]}, "sphere": {"radius": 1}})"),
-            "levels/test.json:6:22: meshes.cube: expected exactly one of \"box\", \"sphere\", "
+            "levels/test.json:6:22: /meshes/cube: expected exactly one of \"box\", \"sphere\", "
             "\"plane\", \"cylinder\", \"gltf\", got \"box\", \"sphere\"");
-  EXPECT_NE(meshError("{}").find("meshes.cube: expected exactly one of"), std::string::npos);
+  EXPECT_NE(meshError("{}").find("/meshes/cube: expected exactly one of"), std::string::npos);
   EXPECT_NE(meshError(R"({"box": {"size": [1, 1, 1]}, "mesh": "Body"})")
-                .find("meshes.cube: \"mesh\" picks part of a glTF model and needs \"gltf\""),
+                .find("/meshes/cube: \"mesh\" picks part of a glTF model and needs \"gltf\""),
             std::string::npos);
   EXPECT_EQ(meshError(R"({"gltf": "a.gltf", "node": "A", "mesh": "B"})"),
-            "levels/test.json:6:54: meshes.cube: \"node\" and \"mesh\" both pick part of the "
+            "levels/test.json:6:54: /meshes/cube: \"node\" and \"mesh\" both pick part of the "
             "model; give only one");
 }
 
@@ -940,45 +949,45 @@ TEST(LevelErrors, scale_light_and_entity_values_are_checked) {
         replaced(kMinimalLevel, R"("material": "grey")", R"("material": "grey", )" + extra));
   };
   EXPECT_NE(entityError(R"("scale": 0)")
-                .find("entities.crate.scale: expected a number in (0, "
+                .find("/entities/crate/scale: expected a number in (0, "
                       "100000], got 0"),
             std::string::npos);
   EXPECT_NE(entityError(R"("scale": "big")")
-                .find("entities.crate.scale: expected a number > 0 or an array of 3 numbers > 0, "
+                .find("/entities/crate/scale: expected a number > 0 or an array of 3 numbers > 0, "
                       "got \"big\""),
             std::string::npos);
   EXPECT_NE(entityError(R"("casts_shadow": "no")")
-                .find("entities.crate.casts_shadow: expected true or false, got \"no\""),
+                .find("/entities/crate/casts_shadow: expected true or false, got \"no\""),
             std::string::npos);
   EXPECT_NE(entityError(R"("mover": {"keyframes": [{}, {}]}, "interactable": {"type": "slide"})")
-                .find("entities.crate: an entity is a mover or interactable, not both"),
+                .find("/entities/crate: an entity is a mover or interactable, not both"),
             std::string::npos);
   EXPECT_NE(entityError(R"("interactable": {"type": "slide", "axis": [0, 0, 0], "min": 0,
                                              "max": 1})")
-                .find("entities.crate.interactable.axis: expected a non-zero direction [x, y, z], "
+                .find("/entities/crate/interactable/axis: expected a non-zero direction [x, y, z], "
                       "got [0,0,0]"),
             std::string::npos);
   EXPECT_NE(entityError(R"("interactable": {"type": "rotate", "min_degrees": 10,
                                              "max_degrees": 5})")
-                .find("entities.crate.interactable.max_degrees: expected a number >= min_degrees "
+                .find("/entities/crate/interactable/max_degrees: expected a number >= min_degrees "
                       "(10), got 5"),
             std::string::npos);
   EXPECT_NE(entityError(R"("interactable": {"type": "slide", "axis": [1, 0, 0], "min": 0,
                                              "max": 1, "start": 2})")
-                .find("entities.crate.interactable.start: expected a number from min to max, [0, "
+                .find("/entities/crate/interactable/start: expected a number from min to max, [0, "
                       "1], got 2"),
             std::string::npos);
   EXPECT_NE(entityError(R"("interactable": {"type": "slide", "light": "x"})")
-                .find("entities.crate.interactable: unknown key \"light\" for a slide "
+                .find("/entities/crate/interactable: unknown key \"light\" for a slide "
                       "interactable; allowed keys: \"type\", \"axis\", \"min\", \"max\", "
                       "\"start\""),
             std::string::npos);
   EXPECT_NE(entityError(R"("mover": {"keyframes": [{}], "repeat": "pingpong"})")
-                .find("entities.crate.mover.repeat: expected one of \"once\", \"loop\", "
+                .find("/entities/crate/mover/repeat: expected one of \"once\", \"loop\", "
                       "\"ping_pong\", got \"pingpong\"; did you mean \"ping_pong\"?"),
             std::string::npos);
   EXPECT_NE(entityError(R"("mover": {"keyframes": [{}]})")
-                .find("entities.crate.mover.keyframes: expected 2 to 256 keyframes, got 1"),
+                .find("/entities/crate/mover/keyframes: expected 2 to 256 keyframes, got 1"),
             std::string::npos);
 
   auto lightError = [](const std::string& light) {
@@ -986,28 +995,28 @@ TEST(LevelErrors, scale_light_and_entity_values_are_checked) {
         replaced(kMinimalLevel, R"("lights": {})", R"("lights": {"l": )" + light + "}"));
   };
   EXPECT_NE(lightError(R"({"type": "directional", "direction": [0, 0, 0], "intensity": 1})")
-                .find("lights.l.direction: expected a non-zero direction [x, y, z], got [0,0,0]"),
+                .find("/lights/l/direction: expected a non-zero direction [x, y, z], got [0,0,0]"),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "spot", "intensity": 1})")
-                .find("lights.l.type: expected one of \"point\", \"directional\", \"sphere\", "
+                .find("/lights/l/type: expected one of \"point\", \"directional\", \"sphere\", "
                       "\"rectangle\", \"disk\", got \"spot\""),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "disc", "intensity": 1})").find("did you mean \"disk\"?"),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "point", "position": [0, 0, 0], "intensity": -1})")
-                .find("lights.l.intensity: expected a number in [0, 1000000000], got -1"),
+                .find("/lights/l/intensity: expected a number in [0, 1000000000], got -1"),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "point", "direction": [0, 0, 1], "intensity": 1})")
-                .find("lights.l: unknown key \"direction\" for a point light; allowed keys: "
+                .find("/lights/l: unknown key \"direction\" for a point light; allowed keys: "
                       "\"type\", \"position\", \"color\", \"intensity\", \"enabled\""),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "directional", "direction": [0, -1, 0], "intensity": 1,
                           "angular_diameter_degrees": 31})")
-                .find("lights.l.angular_diameter_degrees: expected a number in [0, 30], got 31"),
+                .find("/lights/l/angular_diameter_degrees: expected a number in [0, 30], got 31"),
             std::string::npos);
   EXPECT_NE(lightError(R"({"type": "rectangle", "position": [0, 0, 0], "direction": [0, -1, 0],
                           "intensity": 1})")
-                .find("lights.l: missing required key \"size\""),
+                .find("/lights/l: missing required key \"size\""),
             std::string::npos);
 }
 
@@ -1016,18 +1025,18 @@ TEST(LevelErrors, goals_and_lose_conditions_are_checked) {
     return parseError(replaced(kMinimalLevel, R"("lights": {})", R"("goal": )" + goal));
   };
   EXPECT_NE(goalError(R"({"type": "all", "of": []})")
-                .find("goal.of: expected an array of 1 to 16 goals, got []"),
+                .find("/goal/of: expected an array of 1 to 16 goals, got []"),
             std::string::npos);
   EXPECT_NE(goalError(R"({"type": "reach", "min": [0, 0, 0], "max": [1, 0, 1]})")
-                .find("goal.max[1]: expected a number > min[1] (0), got 0"),
+                .find("/goal/max/1: expected a number > min[1] (0), got 0"),
             std::string::npos);
   EXPECT_NE(goalError(R"({"type": "focus", "orb": "crate", "region": [0, 0.5]})")
-                .find("goal.region[0]: expected a number in (0, 1], got 0"),
+                .find("/goal/region/0: expected a number in (0, 1], got 0"),
             std::string::npos);
   EXPECT_NE(goalError(R"({"type": "lit", "sensor": "crate"})")
-                .find("goal: missing required key \"light\""),
+                .find("/goal: missing required key \"light\""),
             std::string::npos);
-  EXPECT_NE(goalError(R"({"of": []})").find("goal: missing required key \"type\""),
+  EXPECT_NE(goalError(R"({"of": []})").find("/goal: missing required key \"type\""),
             std::string::npos);
   std::string nested = R"({"type": "reach", "min": [0, 0, 0], "max": [1, 1, 1]})";
   for (int depth = 0; depth < 9; ++depth) nested = R"({"type": "any", "of": [)" + nested + "]}";
@@ -1037,25 +1046,25 @@ TEST(LevelErrors, goals_and_lose_conditions_are_checked) {
     return parseError(replaced(kMinimalLevel, R"("lights": {})", R"("lose": )" + lose));
   };
   EXPECT_NE(loseError(R"({"type": "fall", "below": 0})")
-                .find("lose: expected an array of lose conditions, got an object"),
+                .find("/lose: expected an array of lose conditions, got an object"),
             std::string::npos);
   EXPECT_NE(loseError(R"([{"type": "fall", "below": 0}, {"type": "stelth"}])")
-                .find("lose[1].type: expected one of \"stealth\", \"fall\", got \"stelth\"; did "
+                .find("/lose/1/type: expected one of \"stealth\", \"fall\", got \"stelth\"; did "
                       "you mean \"stealth\"?"),
             std::string::npos);
 }
 
 TEST(LevelErrors, ids_format_and_structure_are_checked) {
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("grey": {)", R"("gr ey": {)")),
-            "levels/test.json:5:17: materials: invalid material id \"gr ey\": ids are "
+            "levels/test.json:5:17: /materials: invalid material id \"gr ey\": ids are "
             "non-empty and use only letters, digits, '_' and '-'");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("format": 1)", R"("format": 2)")),
-            "levels/test.json:2:13: format: unsupported format 2; this version reads format 1");
+            "levels/test.json:2:13: /format: unsupported format 2; this version reads format 1");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("name": "Test")", R"("name": "")")),
-            "levels/test.json:3:11: name: expected a string of 1 to 80 characters, got \"\"");
+            "levels/test.json:3:11: /name: expected a string of 1 to 80 characters, got \"\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("name": "Test")",
                                 R"("name": ")" + std::string(81, 'x') + "\"")),
-            "levels/test.json:3:11: name: expected a string of 1 to 80 characters, got 81 "
+            "levels/test.json:3:11: /name: expected a string of 1 to 80 characters, got 81 "
             "characters");
   // Characters, not bytes: 80 two-byte letters fit.
   std::string eighty;
@@ -1067,11 +1076,11 @@ TEST(LevelErrors, ids_format_and_structure_are_checked) {
       eighty);
   EXPECT_NE(parseError(replaced(kMinimalLevel, R"("name": "Test")",
                                 R"("name": "Test", "hint": ")" + std::string(2001, 'x') + "\""))
-                .find("hint: expected a string of 0 to 2000 characters, got 2001 characters"),
+                .find("/hint: expected a string of 0 to 2000 characters, got 2001 characters"),
             std::string::npos);
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"({"crate": {"mesh": "cube", "material": "grey"}})",
                                 "{}")),
-            "levels/test.json:7:15: entities: a level needs at least one entity, got {}");
+            "levels/test.json:7:15: /entities: a level needs at least one entity, got {}");
   EXPECT_EQ(parseError("[1, 2]"), "levels/test.json:1:1: expected an object, got [1,2]");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"(  "format": 1,)", "")),
             "levels/test.json:1:1: missing required key \"format\"");
@@ -1084,13 +1093,13 @@ TEST(LevelErrors, section_sizes_are_limited) {
               R"(": {"type": "point", "position": [0, 0, 0], "intensity": 1})";
   }
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("lights": {})", R"("lights": {)" + lights + "}")),
-            "levels/test.json:8:13: lights: 65 lights, more than the limit of 64");
+            "levels/test.json:8:13: /lights: 65 lights, more than the limit of 64");
   std::string keyframes;
   for (int i = 0; i < 257; ++i) keyframes += (i == 0 ? "{}" : ", {}");
   EXPECT_NE(
       parseError(replaced(kMinimalLevel, R"("material": "grey")",
                           R"("material": "grey", "mover": {"keyframes": [)" + keyframes + "]}"))
-          .find("entities.crate.mover.keyframes: 257 keyframes, more than the limit of 256"),
+          .find("/entities/crate/mover/keyframes: 257 keyframes, more than the limit of 256"),
       std::string::npos);
 }
 
@@ -1123,27 +1132,28 @@ std::string gltfPathError(const std::string& path) {
 
 TEST(LevelErrors, loader_rejects_asset_path_outside_level_root) {
   EXPECT_EQ(gltfPathError("../../etc/passwd"),
-            "levels/test.json:6:31: meshes.cube.gltf: model path \"../../etc/passwd\" leaves the "
+            "levels/test.json:6:31: /meshes/cube/gltf: model path \"../../etc/passwd\" leaves the "
             "level's directory and the asset directory");
-  EXPECT_EQ(gltfPathError("models/../../../x.gltf"),
-            "levels/test.json:6:31: meshes.cube.gltf: model path \"models/../../../x.gltf\" leaves "
-            "the level's directory and the asset directory");
+  EXPECT_EQ(
+      gltfPathError("models/../../../x.gltf"),
+      "levels/test.json:6:31: /meshes/cube/gltf: model path \"models/../../../x.gltf\" leaves "
+      "the level's directory and the asset directory");
   EXPECT_EQ(gltfPathError("/etc/model.gltf"),
-            "levels/test.json:6:31: meshes.cube.gltf: model path \"/etc/model.gltf\" is absolute; "
+            "levels/test.json:6:31: /meshes/cube/gltf: model path \"/etc/model.gltf\" is absolute; "
             "write it relative to the level file or starting with \"assets/\"");
   EXPECT_NE(gltfPathError("C:/models/a.gltf").find("is absolute"), std::string::npos);
   EXPECT_EQ(gltfPathError("models%2F..%2Fx.gltf"),
-            "levels/test.json:6:31: meshes.cube.gltf: model path \"models%2F..%2Fx.gltf\" "
+            "levels/test.json:6:31: /meshes/cube/gltf: model path \"models%2F..%2Fx.gltf\" "
             "contains '%': percent-encoding is not supported; write the file name as it is on "
             "disk");
   EXPECT_EQ(gltfPathError(R"(models\\a.gltf)"),
-            "levels/test.json:6:31: meshes.cube.gltf: model path \"models\\a.gltf\" contains a "
+            "levels/test.json:6:31: /meshes/cube/gltf: model path \"models\\a.gltf\" contains a "
             "backslash; separate directories with '/'");
   EXPECT_EQ(gltfPathError("model.obj"),
-            "levels/test.json:6:31: meshes.cube.gltf: expected a path to a .gltf or .glb file, "
+            "levels/test.json:6:31: /meshes/cube/gltf: expected a path to a .gltf or .glb file, "
             "got \"model.obj\"");
   EXPECT_EQ(gltfPathError("missing.gltf"),
-            "levels/test.json:6:31: meshes.cube.gltf: model file \"missing.gltf\" not found "
+            "levels/test.json:6:31: /meshes/cube/gltf: model file \"missing.gltf\" not found "
             "(looked for levels/missing.gltf)");
 }
 
@@ -1157,7 +1167,7 @@ TEST_F(TempDirTest, loader_rejects_symlink_that_leaves_the_level_directory) {
       replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", R"({"gltf": "linked/box.gltf"})"));
   EXPECT_EQ(loadError(root_ / "levels" / "one.json"),
             (root_ / "levels" / "one.json").string() +
-                ":6:31: meshes.cube.gltf: model path \"linked/box.gltf\" leads outside the "
+                ":6:31: /meshes/cube/gltf: model path \"linked/box.gltf\" leads outside the "
                 "level's directory and the asset directory through a symbolic link");
 
   // A link to a single file is followed the same way; one that stays inside is fine.
@@ -1214,7 +1224,7 @@ TEST_F(TempDirTest, assets_paths_resolve_against_the_asset_root) {
   options.assetRoots = {root_ / "elsewhere"};
   EXPECT_EQ(loadError(root_ / "levels" / "one.json", options),
             (root_ / "levels" / "one.json").string() +
-                ":6:31: meshes.cube.gltf: model file \"assets/models/box.glTF\" not found "
+                ":6:31: /meshes/cube/gltf: model file \"assets/models/box.glTF\" not found "
                 "(looked for " +
                 (root_ / "elsewhere" / "models" / "box.glTF").string() + ")");
   options.assetRoots = {root_ / "nowhere", root_ / "assets", root_ / "elsewhere"};
@@ -1222,7 +1232,7 @@ TEST_F(TempDirTest, assets_paths_resolve_against_the_asset_root) {
   options.assetRoots = {root_ / "nowhere"};
   EXPECT_EQ(loadError(root_ / "levels" / "one.json", options),
             (root_ / "levels" / "one.json").string() +
-                ":6:31: meshes.cube.gltf: model path \"assets/models/box.glTF\" names the asset "
+                ":6:31: /meshes/cube/gltf: model path \"assets/models/box.glTF\" names the asset "
                 "directory, but there is none (looked for \"" +
                 (root_ / "nowhere").string() + "\")");
 
@@ -1310,7 +1320,7 @@ TEST_F(TempDirTest, gltf_without_a_material_needs_one_from_the_level) {
                      R"("mesh": "cube", "material": "grey")", R"("mesh": "cube")"));
   EXPECT_EQ(loadError(root_ / "levels" / "one.json"),
             (root_ / "levels" / "one.json").string() +
-                ":7:25: entities.crate: missing required key \"material\" (mesh \"cube\" is a "
+                ":7:25: /entities/crate: missing required key \"material\" (mesh \"cube\" is a "
                 "glTF model without a material, so the entity must name one)");
 }
 
@@ -1328,19 +1338,19 @@ TEST_F(TempDirTest, texture_paths_follow_the_path_rules) {
   EXPECT_EQ(textureError("wood.PNG"), "(no error)");
   EXPECT_EQ(textureError("wood.bmp"),
             prefix +
-                "materials.grey.texture: expected a path to a .png, .jpg or .jpeg file, got "
+                "/materials/grey/texture: expected a path to a .png, .jpg or .jpeg file, got "
                 "\"wood.bmp\"");
   EXPECT_EQ(textureError("../levels/../../wood.png"),
             prefix +
-                "materials.grey.texture: texture path \"../levels/../../wood.png\" leaves the "
+                "/materials/grey/texture: texture path \"../levels/../../wood.png\" leaves the "
                 "level's directory and the asset directory");
   EXPECT_EQ(textureError("wood%20.png"),
             prefix +
-                "materials.grey.texture: texture path \"wood%20.png\" contains '%': "
+                "/materials/grey/texture: texture path \"wood%20.png\" contains '%': "
                 "percent-encoding is not supported; write the file name as it is on disk");
   writeFile(root_ / "levels" / "broken.png", "not a png");
   EXPECT_EQ(textureError("broken.png")
-                .rfind(prefix + "materials.grey.texture: " +
+                .rfind(prefix + "/materials/grey/texture: " +
                            (root_ / "levels" / "broken.png").string() + ": ",
                        0),
             0u);
@@ -1494,7 +1504,7 @@ TEST_F(TempDirTest, gltf_buffer_outside_the_allowed_directory_is_refused) {
   writeFile(root_ / "levels" / "one.json",
             replaced(kMinimalLevel, R"({"box": {"size": [1, 1, 1]}})", R"({"gltf": "box.gltf"})"));
   const std::string error = loadError(root_ / "levels" / "one.json");
-  EXPECT_EQ(error.rfind((root_ / "levels" / "one.json").string() + ":6:31: meshes.cube.gltf: " +
+  EXPECT_EQ(error.rfind((root_ / "levels" / "one.json").string() + ":6:31: /meshes/cube/gltf: " +
                             (root_ / "levels" / "box.gltf").string() + ": refers to \"",
                         0),
             0u)

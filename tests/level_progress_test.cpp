@@ -107,7 +107,7 @@ TEST_F(SettingsFile, unset_field_of_view_is_written_as_null_and_keeps_each_level
   EXPECT_FALSE(load.settings.fieldOfViewDegrees.has_value());
   ASSERT_EQ(load.messages.size(), 1u);
   EXPECT_EQ(load.messages[0], file.string() +
-                                  ":3:28: field_of_view_degrees: expected a number in [30, 120], "
+                                  ":3:28: /field_of_view_degrees: expected a number in [30, 120], "
                                   "got 200; using the default null (the level's)");
 }
 
@@ -152,7 +152,7 @@ TEST_F(SettingsFile, out_of_range_field_takes_its_default_and_keeps_the_others) 
   const game::SettingsLoad load = game::loadSettings(file);
   ASSERT_EQ(load.messages.size(), 1u);
   EXPECT_EQ(load.messages[0], file.string() +
-                                  ":4:19: render_scale: expected a number in (0.1, 1], got 2; "
+                                  ":4:19: /render_scale: expected a number in (0.1, 1], got 2; "
                                   "using the default 0.25");
   EXPECT_FLOAT_EQ(load.settings.renderScale, 0.25f);
   EXPECT_FLOAT_EQ(load.settings.mouseSensitivity, 0.5f);
@@ -176,16 +176,16 @@ TEST_F(SettingsFile, every_kind_of_bad_field_is_reported_where_it_is) {
   const game::SettingsLoad load = game::loadSettings(file);
   const std::string at = file.string() + ":";
   const std::vector<std::string> expected = {
-      at + "7:3: colour: unknown key; ignored",
-      at + "5:24: mouse_sensitivity: expected a number in (0, 10], got 0; using the default 0.1",
-      at + "4:28: field_of_view_degrees: expected a number in [30, 120], got 29; using the "
+      at + "7:3: /colour: unknown key; ignored",
+      at + "5:24: /mouse_sensitivity: expected a number in (0, 10], got 0; using the default 0.1",
+      at + "4:28: /field_of_view_degrees: expected a number in [30, 120], got 29; using the "
            "default null (the level's)",
-      at + "3:19: render_scale: expected a number in (0.1, 1], got 0.1; using the default 0.25",
-      at + "6:12: vsync: expected true or false, got \"yes\"; using the default true",
-      at + "8:21: key_bindings.fly: unknown action; ignored",
-      at + "8:41: key_bindings.jump: expected a GLFW key name such as \"W\" or \"SPACE\", got "
+      at + "3:19: /render_scale: expected a number in (0.1, 1], got 0.1; using the default 0.25",
+      at + "6:12: /vsync: expected true or false, got \"yes\"; using the default true",
+      at + "8:21: /key_bindings/fly: unknown action; ignored",
+      at + "8:41: /key_bindings/jump: expected a GLFW key name such as \"W\" or \"SPACE\", got "
            "\"spacebar\"; using the default \"SPACE\"",
-      at + "8:61: key_bindings.back: expected a GLFW key name such as \"W\" or \"SPACE\", got 7; "
+      at + "8:61: /key_bindings/back: expected a GLFW key name such as \"W\" or \"SPACE\", got 7; "
            "using the default \"S\"",
   };
   EXPECT_EQ(load.messages, expected);
@@ -202,7 +202,7 @@ TEST_F(SettingsFile, a_newer_version_gives_the_defaults) {
   ASSERT_EQ(load.messages.size(), 1u);
   EXPECT_EQ(
       load.messages[0],
-      file.string() + ":2:15: settings: expected version 1, got 2; using the default settings");
+      file.string() + ":2:15: /settings: expected version 1, got 2; using the default settings");
 }
 
 TEST_F(SettingsFile, a_missing_version_is_reported_and_the_fields_still_read) {
@@ -270,8 +270,8 @@ TEST_F(ProgressFile, bad_entries_are_skipped_and_the_others_kept) {
   const std::string bad = ": expected a level file name such as \"01_first_light.json\", got ";
   EXPECT_EQ(load.messages,
             (std::vector<std::string>{
-                file.string() + ":2:40: completed[1]" + bad + "\"../../etc/passwd\"; ignored",
-                file.string() + ":2:60: completed[2]" + bad + "3; ignored"}));
+                file.string() + ":2:40: /completed/1" + bad + "\"../../etc/passwd\"; ignored",
+                file.string() + ":2:60: /completed/2" + bad + "3; ignored"}));
 }
 
 TEST(Progress, the_first_level_and_those_after_a_completed_one_are_unlocked) {

@@ -17,9 +17,9 @@ expect_refusal() {  # replay text, expected message
   fi
 }
 expect_refusal '{"replay": 1, "level": "missing.json", "ticks": 10}' \
-  "$work/bad.json:1:24: level: $work/missing.json: cannot open level file"
+  "$work/bad.json:1:24: /level: $work/missing.json: cannot open level file"
 expect_refusal '{"replay": 1, "level": "missing.json", "ticks": 10, "input": [{"tick": 12}]}' \
-  "$work/bad.json:1:72: input[0].tick: tick 12 is past the end of the replay (ticks: 10)"
+  "$work/bad.json:1:72: /input/0/tick: tick 12 is past the end of the replay (ticks: 10)"
 expect_refusal '{"replay": 1, "level": "missing.json", "ticks": 10' \
   "$work/bad.json:2:1: invalid JSON"
 # A good replay after a bad one: nothing runs when any file is bad.
@@ -32,8 +32,8 @@ printf '{"replay": 1, "level": "missing.json", "ticks": 10, "input": [{"tick": 1
 output=$("$sightline" replay "$work/bad.json" "$(dirname "$0")/../replays/01_first_light_win.json" \
   "$work/bad2.json" 2>&1)
 status=$?
-expected="$work/bad.json:1:24: level: $work/missing.json: cannot open level file
-$work/bad2.json:1:72: input[0].tick: tick 12 is past the end of the replay (ticks: 10)
+expected="$work/bad.json:1:24: /level: $work/missing.json: cannot open level file
+$work/bad2.json:1:72: /input/0/tick: tick 12 is past the end of the replay (ticks: 10)
 2 of 3 replays are malformed; none was run"
 if [ "$status" -eq 0 ] || [ "$output" != "$expected" ]; then
   echo "FAIL: status $status; expected: $expected"

@@ -90,7 +90,7 @@ TEST(Replay, a_recorded_field_of_view_round_trips_and_is_range_checked) {
     FAIL() << "a field of view of 180 degrees was accepted";
   } catch (const game::ReplayError& error) {
     EXPECT_STREQ(error.what(),
-                 "bad.json:1:70: vertical_fov_degrees: expected a number in [1, 179], got 180");
+                 "bad.json:1:70: /vertical_fov_degrees: expected a number in [1, 179], got 180");
   }
 }
 
@@ -119,21 +119,21 @@ TEST(Replay, recorded_input_comes_back_exactly_tick_for_tick) {
 
 TEST(Replay, bad_input_gets_one_message_with_file_line_and_column) {
   EXPECT_EQ(errorOf(replaced(kReplay, R"("tick": 100, "jump")", R"("tick": 10, "jump")")),
-            "replays/test.json:11:15: input[2].tick: events must be in tick order; tick 10 comes "
+            "replays/test.json:11:15: /input/2/tick: events must be in tick order; tick 10 comes "
             "after tick 30");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("tick": 100, "jump")", R"("tick": 300, "jump")")),
-            "replays/test.json:11:15: input[2].tick: tick 300 is past the end of the replay "
+            "replays/test.json:11:15: /input/2/tick: tick 300 is past the end of the replay "
             "(ticks: 300)");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("jump": true)", R"("jmp": true)")),
-            "replays/test.json:11:20: input[2]: unknown key \"jmp\"; allowed keys: \"tick\", "
+            "replays/test.json:11:20: /input/2: unknown key \"jmp\"; allowed keys: \"tick\", "
             "\"hold\", \"move\", \"look\", \"jump\", \"interact\", \"adjust\"");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("replay": 1)", R"("replay": 2)")),
-            "replays/test.json:2:13: replay: unsupported replay format 2; this version reads "
+            "replays/test.json:2:13: /replay: unsupported replay format 2; this version reads "
             "replay format 1");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("move": [0, 1])", R"("move": [0, 2])")),
-            "replays/test.json:9:42: input[0].move[1]: expected a number in [-1, 1], got 2");
+            "replays/test.json:9:42: /input/0/move/1: expected a number in [-1, 1], got 2");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("outcome": "won")", R"("outcome": "win")")),
-            "replays/test.json:13:26: expect.outcome: expected one of \"won\", \"lost\", "
+            "replays/test.json:13:26: /expect/outcome: expected one of \"won\", \"lost\", "
             "\"none\", got \"win\"");
   EXPECT_EQ(errorOf(replaced(kReplay, R"("ticks": 300,)", R"("ticks": 300)")),
             "replays/test.json:8:9: invalid JSON");
