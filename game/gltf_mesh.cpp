@@ -37,6 +37,17 @@ std::string oneLine(std::string text) {
   return joined.empty() ? "unknown error" : joined;
 }
 
+// tinygltf passes nlohmann's exception text on ("[json.exception.parse_error.101] parse error at
+// line 4, column 1: ..."): said as the JSON mistake it is.
+std::string readableLoadError(const std::string& loadError) {
+  std::string text = oneLine(loadError);
+  const std::size_t tag = text.find("[json.exception.");
+  if (tag == std::string::npos) return text;
+  const std::size_t tagEnd = text.find("] ", tag);
+  if (tagEnd == std::string::npos) return text;
+  return text.substr(0, tag) + "invalid JSON: " + text.substr(tagEnd + 2);
+}
+
 template <typename Named>
 std::string namesOf(const std::vector<Named>& items) {
   std::string names;
@@ -70,6 +81,9 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
     fail(file, "is outside the directory " + allowedRoot.string());
   }
 
+  // tinygltf indexes an empty .glb before checking its size (a raw std::out_of_range).
+  if (fs::file_size(file, error) == 0 && !error) fail(file, "cannot load glTF: the file is empty");
+
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&gltf::keepEncodedImage, nullptr);
   loader.SetFsCallbacks(gltf::guardedFsCallbacks(guard));
@@ -82,14 +96,16 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
                  ? loader.LoadBinaryFromFile(&model, &loadError, &loadWarning, file.string())
                  : loader.LoadASCIIFromFile(&model, &loadError, &loadWarning, file.string());
   } catch (const std::exception& exception) {
-    fail(file, std::string("cannot load glTF: ") + exception.what());
+    fail(file,
+         std::string("cannot load glTF: the file is malformed (the glTF reader stopped with \"") +
+             oneLine(exception.what()) + "\")");
   }
   if (!guard.refused.empty()) {
     fail(file, "refers to \"" + guard.refused.front() +
                    "\", which is outside the directory the model was found in (" +
                    guard.root.string() + ")");
   }
-  if (!loaded) fail(file, "cannot load glTF: " + oneLine(loadError));
+  if (!loaded) fail(file, "cannot load glTF: " + readableLoadError(loadError));
 
   GltfModel result;
   gltf::MeshAssembler assembler(model, file);
