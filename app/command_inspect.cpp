@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "app/data_paths.hpp"
+#include "app/level_summary.hpp"
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
@@ -35,6 +36,19 @@ int commandValidate(const Options& options) {
   return failures ? 1 : 0;
 }
 
+int commandVersion() {
+  std::printf("sightline %s\n", SIGHTLINE_VERSION);
+  try {
+    render::Context context(render::ContextOptions{});
+    const render::DeviceInfo& device = context.deviceInfo();
+    std::printf("Vulkan device: %s [%s] %s\n", device.name.c_str(),
+                render::deviceTypeName(device.type), device.driver.c_str());
+  } catch (const std::exception& error) {
+    std::printf("Vulkan device: none usable (%s)\n", error.what());
+  }
+  return 0;
+}
+
 int commandDevices() {
   const auto devices = render::Context::listDevices();
   if (devices.empty()) std::printf("no Vulkan devices found\n");
@@ -60,8 +74,9 @@ int commandInfo(const Options& options) {
   if (!level.author.empty()) std::printf("  author: %s\n", level.author.c_str());
   std::printf("  triangles: %zu in %zu instances of %zu meshes\n", features.triangles,
               features.instances, level.meshes.size());
-  std::printf("  lights: %zu, materials: %zu, textures: %zu\n", features.lights,
-              level.materials.size(), level.textures.size());
+  std::printf("  %s, %s, %s\n", counted(features.lights, "light").c_str(),
+              counted(level.materials.size(), "material").c_str(),
+              counted(level.textures.size(), "texture").c_str());
   std::printf("  glass: %s\n", features.glass ? "yes" : "no");
   if (features.mirrors) {
     std::printf("  mirrors: yes, up to %u bounces\n", features.mirrorBounces);
@@ -80,11 +95,11 @@ int commandInfo(const Options& options) {
                                     action.type == game::Action::Type::Lose;
                            });
       });
-  std::printf("  goal: %s, lose conditions: %zu\n",
-              level.goal    ? "yes"
-              : rulesCanEnd ? "none (its rules win or lose it)"
-                            : "none (sandbox)",
-              level.lose.size());
+  std::printf("  goal: %s\n", level.goal    ? describeGoal(level, *level.goal).c_str()
+                              : rulesCanEnd ? "none (its rules win or lose it)"
+                                            : "none (sandbox)");
+  for (const game::LoseCondition& lose : level.lose)
+    std::printf("  lost by %s\n", describeLoss(level, lose).c_str());
   if (!level.rules.empty()) {
     std::printf("  logic: %zu rule%s:", level.rules.size(), level.rules.size() == 1 ? "" : "s");
     for (const game::Rule& rule : level.rules) std::printf(" %s", rule.id.c_str());

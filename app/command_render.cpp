@@ -9,9 +9,9 @@
 #include "app/commands.hpp"
 #include "app/data_paths.hpp"
 #include "app/session.hpp"
-#include "game/level.hpp"
 #include "game/level_loader.hpp"
 #include "game/level_watcher.hpp"
+#include "render/gpu_types.hpp"
 #include "render/image_io.hpp"
 #include "render/renderer.hpp"
 
@@ -68,7 +68,18 @@ int renderLevel(const fs::path& levelFile, const Options& options, const fs::pat
   printWarnings(level);
   render::Context context(contextOptions(options));
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
-  const uint32_t frames = options.reference ? options.samplesPerPixel : options.frames.value_or(1);
+  // Soft shadows are denoised over frames: by default, render until the history is full, so
+  // the picture is the one play settles on, not one frame's stipple.
+  const bool softShadows = game::levelFeatures(level).areaLights;
+  const uint32_t settledFrames = softShadows ? uint32_t(DENOISER_MAX_HISTORY) : 1;
+  const uint32_t frames =
+      options.reference ? options.samplesPerPixel : options.frames.value_or(settledFrames);
+  if (softShadows && !options.reference && frames < uint32_t(DENOISER_MAX_HISTORY)) {
+    std::fprintf(stderr,
+                 "note: %u frame%s of a level with soft shadows: the denoiser settles over %u "
+                 "frames, so the shadows are still noisy\n",
+                 frames, frames == 1 ? "" : "s", uint32_t(DENOISER_MAX_HISTORY));
+  }
   const RenderResult result = renderToPng(context, compiler, level, options, frames, out);
   std::printf("%s: %ux%u on %s (%s)\n", level.name.c_str(), options.width, options.height,
               context.deviceInfo().name.c_str(), context.deviceInfo().driver.c_str());

@@ -12,6 +12,7 @@ int commandBenchQuality(const Options& options);
 int commandValidate(const Options& options);
 int commandInfo(const Options& options);
 int commandDevices();
+int commandVersion();  // the version and the Vulkan device the game would use
 int commandReplay(const Options& options);
 int commandSoak(const Options& options);
 

@@ -11,6 +11,11 @@
 int main(int argc, char** argv) {
   try {
     const app::Options options = app::parseOptions(argc, argv);
+    if (options.help) {
+      std::fputs(app::commandUsage(options.command).c_str(), stdout);
+      return 0;
+    }
+    if (options.command == "version") return app::commandVersion();
     if (options.command == "render") return app::commandRender(options);
     if (options.command == "play") return app::commandPlay(options);
     if (options.command == "bench") return app::commandBench(options);
@@ -21,13 +26,15 @@ int main(int argc, char** argv) {
     if (options.command == "bench-quality") return app::commandBenchQuality(options);
     if (options.command == "replay") return app::commandReplay(options);
     if (options.command == "soak") return app::commandSoak(options);
-    if (options.command == "help" || options.command == "--help" || options.command == "-h") {
-      std::fputs(app::kUsage, stdout);
+    if (options.command == "help") {
+      std::fputs(app::usage().c_str(), stdout);
       return 0;
     }
     throw app::UsageError("unknown command '" + options.command + "'");
   } catch (const app::UsageError& error) {
-    std::fprintf(stderr, "sightline: %s\n\n%s", error.what(), app::kUsage);
+    // After the mistake, what the command takes (or which commands there are).
+    const std::string command = argc > 1 ? argv[1] : "";
+    std::fprintf(stderr, "sightline: %s\n\n%s", error.what(), app::commandUsage(command).c_str());
     return 2;
   } catch (const game::ReplayError& error) {
     std::fprintf(stderr, "%s\n", error.what());

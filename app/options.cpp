@@ -1,60 +1,184 @@
 #include "app/options.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
+#include "game/json_reader.hpp"
+
 namespace app {
 
-const char* const kUsage = R"(usage: sightline <command> [options]
+namespace {
 
-commands:
-  play [level.json]            play in a window (without a display: render headless)
-  render <level.json>          render a level headless and write a PNG
-  preview <level.json>         render a thumbnail from the spawn camera (--watch: re-render
-                               whenever the level or a file it uses is saved)
-  bench [level.json...]        time every shipped level (or the given ones)
-  bench-quality <level.json>   soft-shadow error (RMSE, SSIM) against GPU time: a table, a CSV
-                               and a log-log plot in --out DIR (default out/)
-  validate <level.json...>     check levels and report the first error in each
-  info <level.json>            triangles, instances, lights and the features a level uses
-  devices                      list Vulkan devices and whether they can run Sightline
-  replay <replay.json...>      run replays headless and check their expectations (exit 0
-                               when all hold); --trace FILE.csv for the per-tick values
-  soak <level.json>            run --frames frames (default 3000) with the movers going and
-                               fail if resident memory grows more than 1 MB after frame 500;
-                               with --validate also if a Vulkan object is left at exit
+// Every command: its arguments and what it does, as `sightline help` and `<command> --help` say.
+struct CommandSpec {
+  const char* name;
+  const char* arguments;
+  const char* summary;  // lines after the first are indented to line up
+};
 
-options:
-  --size WxH          image size (render: 320x180; play: render size, scaled to the window)
-  --out FILE          PNG to write (render: out/<level>.png)
-  --frames N          frames to render (render: 1, bench: 300)
-  --tonemap MODE      aces (default) or identity (exposure, then clamp)
-  --exposure X        linear exposure multiplier (default 1)
-  --row-groups N      interleave launch rows in N groups (1 = off; default 8 on CPU drivers,
-                      1 on GPUs)
-  --no-subgroup-counters  render, bench, bench-quality: one counter atomic per pixel even
-                      where the GPU could sum them per subgroup first (to measure the difference)
-  --device SEL        device index or part of its name (see `sightline devices`)
-  --validate          enable the Vulkan validation layer (with synchronization checks)
-  --reference         render: ground truth, averaging --spp raw soft-shadow samples
-  --spp N             samples per pixel for --reference (default 256)
-  --watch             preview: keep running and re-render on every save
-  --watch-limit N     preview --watch: stop after N renders (for scripts and tests)
-  --trace FILE.csv    replay: write each tick's probe values, goal progress and player state
-  --update-images     replay: store the image checkpoints as rendered now
-  --quit-after-ticks N
-                      play: exit cleanly after N world ticks (for scripts and tests)
-  --hud-off           play: no heads-up display (focus frame, goal bars, exposure meters)
-  --record FILE.json  play: save the first level's run as a replay (until won, lost or quit)
-  --reset-progress    play: forget which levels were won
-  --window WxH        play: the window's size (default 1280x720)
-  --capture FILE.png  play, with --quit-after-ticks: save the window's last image as the
-                      swapchain holds it (picture, HUD and text)
-  --csv FILE          bench: also write the table as CSV
-  --json FILE         bench: also write the table as JSON
-  --embree-frames N   bench: frames of the Embree CPU reference per level and size (default
-                      30, 0 = skip it)
-)";
+const std::vector<CommandSpec> kCommands{
+    {"play", "[level.json]", "play in a window (without a display: render headless)"},
+    {"render", "<level.json>", "render a level headless and write a PNG"},
+    {"preview", "<level.json>",
+     "render a thumbnail from the spawn camera (--watch: re-render\n"
+     "whenever the level or a file it uses is saved)"},
+    {"bench", "[level.json...]", "time every shipped level (or the given ones)"},
+    {"bench-quality", "<level.json>",
+     "soft-shadow error (RMSE, SSIM) against GPU time: a table, a CSV\n"
+     "and a log-log plot in --out DIR (default out/)"},
+    {"validate", "<level.json...>", "check levels and report the first error in each"},
+    {"info", "<level.json>", "triangles, instances, lights and the features a level uses"},
+    {"devices", "", "list Vulkan devices and whether they can run Sightline"},
+    {"replay", "<replay.json...>",
+     "run replays headless and check their expectations (exit 0\n"
+     "when all hold); --trace FILE.csv for the per-tick values"},
+    {"soak", "<level.json>",
+     "run --frames frames (default 3000) with the movers going and\n"
+     "fail if resident memory grows more than 1 MB after frame 500;\n"
+     "with --validate also if a Vulkan object is left at exit"},
+};
+
+// Every option: its value (empty for a switch), what it does and the commands that take it.
+struct OptionSpec {
+  const char* name;
+  const char* value;
+  const char* help;
+  std::vector<std::string> commands;
+};
+
+// The commands that make a Vulkan device and render with it.
+const std::vector<std::string> kRendering{"play",          "render", "preview", "bench",
+                                          "bench-quality", "replay", "soak"};
+const std::vector<std::string> kPicture{"render", "preview", "bench", "bench-quality"};
+
+std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+const std::vector<OptionSpec> kOptions{
+    {"--size",
+     "WxH",
+     "image size (render: 320x180; play: render size, scaled to the window)",
+     {"play", "render", "preview", "bench", "bench-quality", "soak"}},
+    {"--out",
+     "FILE",
+     "PNG to write (render: out/<level>.png; bench-quality: a directory)",
+     {"render", "preview", "bench-quality"}},
+    {"--frames",
+     "N",
+     "frames to render (render: 1, bench: 300, soak: 3000)",
+     {"render", "preview", "bench", "soak"}},
+    {"--tonemap", "MODE", "aces (default) or identity (exposure, then clamp)", kPicture},
+    {"--exposure", "X", "linear exposure multiplier (default 1)", kPicture},
+    {"--row-groups", "N",
+     "interleave launch rows in N groups (1 = off; default 8 on CPU drivers,\n1 on GPUs)",
+     kPicture},
+    {"--no-subgroup-counters", "",
+     "one counter atomic per pixel even where the GPU could sum them per\nsubgroup first (to "
+     "measure the difference)",
+     kPicture},
+    {"--device", "SEL", "device index or part of its name (see `sightline devices`)", kRendering},
+    {"--validate", "", "enable the Vulkan validation layer (with synchronization checks)",
+     join(kRendering, {"devices"})},
+    {"--reference", "", "ground truth, averaging --spp raw soft-shadow samples", {"render"}},
+    {"--spp", "N", "samples per pixel for --reference (default 256)", {"render", "bench-quality"}},
+    {"--watch", "", "keep running and re-render on every save", {"preview"}},
+    {"--watch-limit",
+     "N",
+     "with --watch: stop after N renders (for scripts and tests)",
+     {"preview"}},
+    {"--trace",
+     "FILE.csv",
+     "write each tick's probe values, goal progress, rules and player state",
+     {"replay"}},
+    {"--update-images", "", "store the image checkpoints as rendered now", {"replay"}},
+    {"--quit-after-ticks",
+     "N",
+     "exit cleanly after N world ticks (for scripts and tests)",
+     {"play"}},
+    {"--hud-off", "", "no heads-up display (focus frame, goal bars, exposure meters)", {"play"}},
+    {"--record",
+     "FILE.json",
+     "save the first level's run as a replay (until won, lost or quit)",
+     {"play"}},
+    {"--reset-progress", "", "forget which levels were won", {"play"}},
+    {"--window", "WxH", "the window's size (default 1280x720)", {"play"}},
+    {"--capture",
+     "FILE.png",
+     "with --quit-after-ticks: save the window's last image as the swapchain\nholds it "
+     "(picture, HUD and text)",
+     {"play"}},
+    {"--csv", "FILE", "also write the table as CSV", {"bench"}},
+    {"--json", "FILE", "also write the table as JSON", {"bench"}},
+    {"--embree-frames",
+     "N",
+     "frames of the Embree CPU reference per level and size (default 30,\n0 = skip it)",
+     {"bench"}},
+};
+
+const CommandSpec* findCommand(const std::string& name) {
+  for (const CommandSpec& command : kCommands)
+    if (name == command.name) return &command;
+  return nullptr;
+}
+
+const OptionSpec* findOption(const std::string& name) {
+  for (const OptionSpec& option : kOptions)
+    if (name == option.name) return &option;
+  return nullptr;
+}
+
+bool takes(const OptionSpec& option, const std::string& command) {
+  return std::find(option.commands.begin(), option.commands.end(), command) !=
+         option.commands.end();
+}
+
+// `text` with every line after the first indented by `indent` spaces.
+std::string indented(const std::string& text, size_t indent) {
+  std::string result;
+  for (const char c : text) {
+    result += c;
+    if (c == '\n') result += std::string(indent, ' ');
+  }
+  return result;
+}
+
+std::string column(std::string text, size_t width) {
+  if (text.size() < width) return text + std::string(width - text.size(), ' ');
+  return text + "\n" + std::string(width, ' ');
+}
+
+}  // namespace
+
+std::string usage() {
+  std::string text = "usage: sightline <command> [options]\n\ncommands:\n";
+  for (const CommandSpec& command : kCommands) {
+    const std::string head = std::string(command.name) + " " + command.arguments;
+    text += "  " + column(head, 29) + indented(command.summary, 31) + "\n";
+  }
+  text +=
+      "\n`sightline <command> --help` lists a command's options; `sightline --version` prints the\n"
+      "version and the Vulkan device the game would use.\n";
+  return text;
+}
+
+std::string commandUsage(const std::string& name) {
+  const CommandSpec* command = findCommand(name);
+  if (command == nullptr) return usage();
+  std::string text = std::string("usage: sightline ") + command->name +
+                     (*command->arguments ? std::string(" ") + command->arguments : "") +
+                     " [options]\n\n" + indented(command->summary, 0) + "\n";
+  std::string options;
+  for (const OptionSpec& option : kOptions) {
+    if (!takes(option, name)) continue;
+    const std::string head = std::string(option.name) + (*option.value ? " " : "") + option.value;
+    options += "  " + column(head, 24) + indented(option.help, 26) + "\n";
+  }
+  text += options.empty() ? "\nno options\n" : "\noptions:\n" + options;
+  return text;
+}
 
 namespace {
 
@@ -85,12 +209,39 @@ Options parseOptions(int argc, char** argv) {
   Options options;
   if (argc < 2) throw UsageError("missing command");
   options.command = argv[1];
+  if (options.command == "--help" || options.command == "-h") options.command = "help";
+  if (options.command == "--version" || options.command == "-V") options.command = "version";
+  const bool known = findCommand(options.command) != nullptr || options.command == "help" ||
+                     options.command == "version";
+  if (!known) {
+    std::vector<std::string> names{"help", "version"};
+    for (const CommandSpec& command : kCommands) names.push_back(command.name);
+    throw UsageError("unknown command '" + options.command + "'" +
+                     game::didYouMean(game::nearMiss(options.command, names)));
+  }
   for (int i = 2; i < argc; ++i) {
     const std::string argument = argv[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw UsageError(argument + ": expected a value after it");
       return argv[++i];
     };
+    if (argument == "--help" || argument == "-h") {
+      options.help = true;
+      continue;
+    }
+    if (argument.size() > 1 && argument[0] == '-') {
+      const OptionSpec* option = findOption(argument);
+      if (option == nullptr) {
+        std::vector<std::string> names;
+        for (const OptionSpec& spec : kOptions) names.push_back(spec.name);
+        throw UsageError("unknown option '" + argument + "'" +
+                         game::didYouMean(game::nearMiss(argument, names)));
+      }
+      if (!takes(*option, options.command)) {
+        throw UsageError(options.command + " does not take " + argument + "; `sightline " +
+                         options.command + " --help` lists what it takes");
+      }
+    }
     if (argument == "--size") {
       parseSize("--size", value(), &options.width, &options.height);
       options.sizeGiven = true;
@@ -153,10 +304,6 @@ Options parseOptions(int argc, char** argv) {
       options.embreeFrames = parseCount("--embree-frames", value(), 0, 1000000);
     } else if (argument == "--trace") {
       options.trace = value();
-    } else if (argument == "--help" || argument == "-h") {
-      options.command = "help";
-    } else if (!argument.empty() && argument[0] == '-') {
-      throw UsageError("unknown option '" + argument + "'");
     } else {
       options.positional.push_back(argument);
     }

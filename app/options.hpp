@@ -17,10 +17,14 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-extern const char* const kUsage;
+// What `sightline help` prints: the commands, one line each.
+std::string usage();
+// What `sightline <command> --help` prints: its arguments and the options it takes.
+std::string commandUsage(const std::string& command);
 
 struct Options {
-  std::string command;
+  std::string command;  // "help" and "version" too
+  bool help = false;    // <command> --help
   std::vector<std::string> positional;
   uint32_t width = 320, height = 180;
   bool sizeGiven = false;
@@ -49,7 +53,8 @@ struct Options {
   uint32_t embreeFrames = 30;                    // bench: Embree reference frames (0: none)
 };
 
-// Throws UsageError naming the option and what was expected.
+// Throws UsageError naming the option and what was expected: an unknown option (with the
+// nearest known one), or one the command does not take.
 Options parseOptions(int argc, char** argv);
 
 }  // namespace app

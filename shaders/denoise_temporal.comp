@@ -10,7 +10,7 @@
 // sample; also keeps luminance moments for the variance the spatial filter steers by.
 // In reference mode it is a plain running average with no clamping and no cap.
 
-const float MAX_HISTORY_LENGTH = 32.0;  // the oldest weight stays >= 1/32: a bounded lag
+const float MAX_HISTORY_LENGTH = float(DENOISER_MAX_HISTORY);
 // The history is clamped to the range of this frame's samples in a 5x5 neighbourhood, widened
 // by a margin: one-sample visibility is 0 or 1, so in a penumbra a smaller window is often
 // uniform by chance and a clamp to it would crush the history (bias that never converges);

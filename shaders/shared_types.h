@@ -38,6 +38,9 @@ using uint = uint32_t;
 #define BINDING_MOMENTS_NEXT 21  // this frame's moments
 #define BINDING_FILTER_A 22      // rgba16f: rgb visibility, a variance (ping)
 #define BINDING_FILTER_B 23      // (pong)
+// The most frames the temporal filter averages: the oldest weight stays >= 1/32, a bounded lag;
+// a static view has settled after this many frames.
+#define DENOISER_MAX_HISTORY 32
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 
