@@ -54,6 +54,7 @@ struct Entity {
 struct Goal {
   enum class Type { Focus, Lit, Reach, All, Any };
   Type type = Type::Focus;
+  std::string label;             // the player's words for it; "" for the default ones
   uint32_t entity = 0;           // Focus: the orb; Lit: the sensor (index into entities)
   uint32_t light = 0;            // Lit: index into lights
   glm::vec2 region{0.2f, 0.2f};  // Focus: centred box, fractions of the screen
@@ -70,6 +71,7 @@ struct Goal {
 struct LoseCondition {
   enum class Type { Stealth, Fall };
   Type type = Type::Fall;
+  std::string label;           // the player's words for it; "" for the default ones
   uint32_t light = 0;          // Stealth: the watcher
   float exposureLimit = 0.5f;  // Stealth
   float seconds = 1.0f;        // Stealth

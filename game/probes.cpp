@@ -5,53 +5,79 @@ namespace game {
 namespace {
 
 // Depth first, parents before children, so probe indices follow the goal tree's file order.
-void addGoalProbes(const Goal& goal, ProbeLayout& layout) {
+// An id in quotes; levels built in code may lack ids ("#2").
+std::string quotedId(const std::string& id, uint32_t index) {
+  return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
+}
+
+std::string lightName(const Level& level, uint32_t light) {
+  return quotedId(light < level.lightIds.size() ? level.lightIds[light] : "", light);
+}
+
+std::string litLabel(const Level& level, uint32_t sensor, uint32_t light) {
+  const std::string& id = sensor < level.entities.size() ? level.entities[sensor].id : "";
+  return quotedId(id, sensor) + " lit by " + lightName(level, light);
+}
+
+std::string seenLabel(const Level& level, uint32_t watcher) {
+  return "Seen by " + lightName(level, watcher);
+}
+
+void addGoalProbes(const Level& level, const Goal& goal, ProbeLayout& layout) {
   switch (goal.type) {
     case Goal::Type::Focus:
       layout.focus.push_back({goal.entity, goal.region});
       break;
     case Goal::Type::Lit:
-      layout.exposure.push_back({ExposureProbe::Target::Entity, goal.entity, goal.light});
+      layout.exposure.push_back(
+          {ExposureProbe::Target::Entity, goal.entity, goal.light,
+           goal.label.empty() ? litLabel(level, goal.entity, goal.light) : goal.label,
+           goal.threshold});
       break;
     case Goal::Type::Reach:
       break;
     case Goal::Type::All:
     case Goal::Type::Any:
-      for (const Goal& child : goal.children) addGoalProbes(child, layout);
+      for (const Goal& child : goal.children) addGoalProbes(level, child, layout);
       break;
   }
 }
 
 // Same order as the logic's own walk over its conditions (game/logic.cpp).
-void addConditionProbes(const Condition& condition, ProbeLayout& layout) {
+void addConditionProbes(const Level& level, const Condition& condition, ProbeLayout& layout) {
   switch (condition.type) {
     case Condition::Type::Focus:
       layout.focus.push_back({condition.entity, condition.region});
       break;
     case Condition::Type::Lit:
-      layout.exposure.push_back({ExposureProbe::Target::Entity, condition.entity, condition.light});
+      layout.exposure.push_back({ExposureProbe::Target::Entity, condition.entity, condition.light,
+                                 litLabel(level, condition.entity, condition.light),
+                                 condition.threshold});
       break;
     case Condition::Type::Seen:
-      layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light});
+      layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light,
+                                 seenLabel(level, condition.light), condition.threshold});
       break;
     default:
       break;
   }
-  for (const Condition& child : condition.children) addConditionProbes(child, layout);
+  for (const Condition& child : condition.children) addConditionProbes(level, child, layout);
 }
 
 }  // namespace
 
 ProbeLayout probeLayout(const Level& level) {
   ProbeLayout layout;
-  if (level.goal) addGoalProbes(*level.goal, layout);
+  if (level.goal) addGoalProbes(level, *level.goal, layout);
   for (const LoseCondition& lose : level.lose) {
     if (lose.type == LoseCondition::Type::Stealth)
-      layout.exposure.push_back({ExposureProbe::Target::Player, 0, lose.light});
+      layout.exposure.push_back({ExposureProbe::Target::Player, 0, lose.light,
+                                 lose.label.empty() ? seenLabel(level, lose.light) : lose.label,
+                                 lose.exposureLimit});
   }
   layout.firstLogicFocus = layout.focus.size();
   layout.firstLogicExposure = layout.exposure.size();
-  for (const Rule& rule : level.rules) addConditionProbes(rule.condition, layout);
+  for (const Rule& rule : level.rules) addConditionProbes(level, rule.condition, layout);
   return layout;
 }
 

@@ -2,6 +2,7 @@
 // The game's eyes: what the ray-gen shader measures for the rules, and the readings it returns.
 // The renderer fills ProbeReadings from its probe buffer; game/rules turns them into progress.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -23,6 +24,10 @@ struct ExposureProbe {
   Target target = Target::Entity;
   uint32_t entity = 0;  // Target::Entity: index into Level::entities
   uint32_t light = 0;   // index into Level::lights
+  // For the HUD's meter: what it measures, in the player's words, and the reading that counts
+  // (a lit sensor at or above it; a watcher sees the player above it).
+  std::string label;
+  float threshold = 0.5f;
 };
 
 // Every probe a level needs, in a fixed order: focus goals and lit goals in the order they

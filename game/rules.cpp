@@ -16,12 +16,6 @@ uint32_t ticksFor(float seconds) {
   return uint32_t(std::max(1.0, ticks));
 }
 
-std::string number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%g", value);
-  return text;
-}
-
 std::string quoted(const std::string& id, uint32_t index) {
   return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
 }
@@ -78,29 +72,27 @@ uint32_t Rules::addNode(const Goal& goal, const Level& level, uint32_t& focusCou
   switch (goal.type) {
     case Goal::Type::Focus:
       node.probe = int32_t(focusCount++);
-      label = "focus on " + entityName(level, goal.entity);
+      label = "Hold " + entityName(level, goal.entity) + " in view";
       break;
     case Goal::Type::Lit:
       node.probe = int32_t(exposureCount++);
       node.needTicks = ticksFor(goal.holdSeconds);
-      label = "light " + entityName(level, goal.entity) + " with " + lightName(level, goal.light);
+      label = "Light " + entityName(level, goal.entity) + " with " + lightName(level, goal.light);
       break;
-    case Goal::Type::Reach: {
-      const glm::vec3 centre = 0.5f * (goal.min + goal.max);
-      label =
-          "reach (" + number(centre.x) + ", " + number(centre.y) + ", " + number(centre.z) + ")";
+    case Goal::Type::Reach:
+      label = "Reach the goal";
       break;
-    }
     case Goal::Type::All:
     case Goal::Type::Any:
-      label = std::string(goal.type == Goal::Type::All ? "all" : "any") + " of " +
-              std::to_string(goal.children.size());
+      label = goal.type == Goal::Type::All
+                  ? "All " + std::to_string(goal.children.size()) + " of these"
+                  : "Any one of " + std::to_string(goal.children.size());
       for (const Goal& child : goal.children)
         node.children.push_back(addNode(child, level, focusCount, exposureCount));
       break;
   }
   nodes_[index] = std::move(node);
-  progress_[index].label = std::move(label);
+  progress_[index].label = goal.label.empty() ? std::move(label) : goal.label;
   return index;
 }
 
@@ -176,10 +168,10 @@ void Rules::update(uint64_t tick, const World& world, const ProbeReadings* lates
       const bool seen = exposure_[uint32_t(loss.probe)] > loss.condition.exposureLimit;
       loss.runTicks = seen ? loss.runTicks + 1 : 0;
       triggered = loss.runTicks >= loss.needTicks;
-      why = "seen by " + loss.watcher + " for " + number(loss.condition.seconds) + " s";
+      why = loss.condition.label.empty() ? "Seen by " + loss.watcher : loss.condition.label;
     } else {
       triggered = feet.y < loss.condition.below;
-      why = "fell below " + number(loss.condition.below) + " m";
+      why = loss.condition.label.empty() ? "Fell" : loss.condition.label;
     }
     if (triggered && lostReason.empty()) lostReason = why;  // the first in file order
   }

@@ -31,7 +31,7 @@ class World;
 enum class Outcome { Playing, Won, Lost };
 
 struct GoalProgress {
-  std::string label;      // "focus on \"orb\"", "all of 3", ...
+  std::string label;      // the goal's "label", else "Hold \"orb\" in view", "All 3 of these", ...
   float progress = 0.0f;  // [0, 1]
   bool met = false;
 };
@@ -53,7 +53,8 @@ class Rules {
 
   Outcome outcome() const { return outcome_; }
   uint64_t outcomeTick() const { return outcomeTick_; }  // valid unless Playing
-  const std::string& reason() const { return reason_; }  // "fell below -5 m", ...
+  // The lose condition's label (else "Fell", "Seen by \"lamp\""), or the goal's label + ": met".
+  const std::string& reason() const { return reason_; }
   // Every goal node depth first, parents before children (the replay's progress indices).
   const std::vector<GoalProgress>& progress() const { return progress_; }
   bool sandbox() const { return nodes_.empty(); }

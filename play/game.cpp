@@ -69,7 +69,11 @@ int Game::run(const fs::path& firstLevel) {
     const std::vector<render::HudRect> hud =
         options_.hudOff ? std::vector<render::HudRect>{} : hudRects(*played_.simulation);
     ui_->beginFrame();
-    if (!options_.hudOff) drawScreenText(played_, presenter_, fps_, authorOverlay_);
+    if (!options_.hudOff) {
+      const auto interact = settings_.keyBindings.find("interact");
+      drawScreenText(played_, presenter_, fps_, authorOverlay_,
+                     interact != settings_.keyBindings.end() ? interact->second : "E");
+    }
     if (paused_) drawPauseMenu(menu_, played_, levels_, settings_, keyCodes_, presenter_);
     const render::OverlayDraw overlay = ui_->endFrame();
     if (presenter_.present(played_.simulation->renderer(), hud, overlay)) ++framesShown_;

@@ -14,8 +14,8 @@ namespace play {
 namespace {
 
 // The HUD's bars, in fractions of the picture: rows grow upwards from the bottom one.
-constexpr float kBarTop = 0.93f, kBarGap = 0.045f, kBarHeight = 0.025f, kBarWidth = 0.3f;
-constexpr float kGoalBarLeft = 0.02f, kExposureBarLeft = 0.68f;
+constexpr float kBarTop = 0.93f, kBarGap = 0.045f, kBarHeight = 0.025f, kBarWidth = 0.36f;
+constexpr float kGoalBarLeft = 0.02f, kExposureBarLeft = 0.62f;
 constexpr size_t kHudRows = 4;
 
 ImU32 colour(uint8_t red, uint8_t green, uint8_t blue) {
@@ -97,10 +97,23 @@ std::vector<render::HudRect> hudRects(const sim::Simulation& simulation) {
   for (size_t i = 0; i < goals.size() && i < kHudRows; ++i)
     bar(kGoalBarLeft, int(i), goals[i].progress,
         goals[i].met ? HudColour::BluishGreen : HudColour::SkyBlue);
-  if (const auto& readings = simulation.latestReadings()) {
-    for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i)
-      bar(kExposureBarLeft, int(i), readings->exposure[i], HudColour::Orange);
+  const auto& readings = simulation.latestReadings();
+  const std::vector<game::ExposureProbe>& meters = simulation.layout().exposure;
+  for (size_t i = 0; i < meters.size() && i < kHudRows; ++i) {
+    bar(kExposureBarLeft, int(i), readings ? readings->exposure[i] : 0.0f, HudColour::Orange);
+    // Where the reading starts to count: a lit sensor at or above it, a watcher above it.
+    const float y0 = kBarTop - kBarGap * float(i),
+                x = kExposureBarLeft + kBarWidth * meters[i].threshold;
+    rects.push_back(
+        {x - 0.002f, y0 - 0.006f, x + 0.002f, y0 + kBarHeight + 0.006f, HudColour::White});
   }
+  // The crosshair: what is picked and what the focus region is centred on.
+  constexpr float kArm = 0.012f, kThickness = 0.0015f;
+  const float aspect = float(simulation.renderer().width()) / float(simulation.renderer().height());
+  rects.push_back({0.5f - kArm / aspect, 0.5f - kThickness, 0.5f + kArm / aspect, 0.5f + kThickness,
+                   HudColour::White});
+  rects.push_back({0.5f - kThickness / aspect, 0.5f - kArm, 0.5f + kThickness / aspect, 0.5f + kArm,
+                   HudColour::White});
   const game::Outcome outcome = simulation.outcome();
   if (outcome != game::Outcome::Playing)
     rects.push_back(
@@ -110,7 +123,7 @@ std::vector<render::HudRect> hudRects(const sim::Simulation& simulation) {
 }
 
 void drawScreenText(const PlayedLevel& played, const render::Presenter& presenter, double fps,
-                    bool authorOverlay) {
+                    bool authorOverlay, const std::string& interactKey) {
   const game::Level& level = *played.level;
   const sim::Simulation& simulation = *played.simulation;
   ImDrawList* list = ImGui::GetForegroundDrawList();
@@ -134,24 +147,41 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   const ImVec2 topRight = at(1.0f, 0.07f);
   shadowedText(list, ImVec2(topRight.x - margin - fpsWidth, topRight.y), white, fpsText, size);
 
-  // Beside the bars hudRects() draws: goals on the left, exposure meters on the right.
+  // On the bars hudRects() draws, so the two columns never run into each other: goals on the
+  // left, exposure meters on the right.
+  auto barText = [&](float left, size_t row, const std::string& text, ImU32 textColour) {
+    const float y = kBarTop - kBarGap * float(row) + kBarHeight / 2;
+    const ImVec2 position = at(left + 0.006f, y);
+    list->PushClipRect(at(left, 0.0f), at(left + kBarWidth, 1.0f), true);
+    shadowedText(list, ImVec2(position.x, position.y - size / 2), textColour, text, size);
+    list->PopClipRect();
+  };
   const auto& goals = simulation.rules().progress();
   for (size_t i = 0; i < goals.size() && i < kHudRows; ++i) {
-    const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
-    const ImVec2 position = at(kGoalBarLeft + kBarWidth + 0.01f, y);
-    shadowedText(list, ImVec2(position.x, position.y - size / 2), goals[i].met ? green : white,
-                 goals[i].label + "  " + percent(goals[i].progress), size);
+    barText(kGoalBarLeft, i, goals[i].label + "  " + percent(goals[i].progress),
+            goals[i].met ? green : white);
   }
-  if (const auto& readings = simulation.latestReadings()) {
-    for (size_t i = 0; i < readings->exposure.size() && i < kHudRows; ++i) {
-      const float y = kBarTop - kBarGap * float(i) + kBarHeight / 2;
-      const std::string text =
-          "sensor " + std::to_string(i + 1) + " lit  " + percent(readings->exposure[i]);
-      const ImVec2 position = at(kExposureBarLeft - 0.01f, y);
-      shadowedText(list,
-                   ImVec2(position.x - ImGui::CalcTextSize(text.c_str()).x, position.y - size / 2),
-                   white, text, size);
-    }
+  const auto& readings = simulation.latestReadings();
+  const std::vector<game::ExposureProbe>& meters = simulation.layout().exposure;
+  for (size_t i = 0; i < meters.size() && i < kHudRows; ++i) {
+    barText(kExposureBarLeft, i,
+            meters[i].label + "  " + percent(readings ? readings->exposure[i] : 0.0f), white);
+  }
+  // What the crosshair is on, and how to use it.
+  if (const std::optional<uint32_t> picked = simulation.world().pickedEntity()) {
+    const game::Interactable& it = *level.entities[*picked].interactable;
+    const std::string text =
+        it.type == game::Interactable::Type::Switch
+            ? "Press " + interactKey + " to switch"
+            : "Hold " + interactKey + " and turn the wheel (or Q / R) to " +
+                  (it.type == game::Interactable::Type::Rotate ? "turn it" : "slide it");
+    // Just below the largest focus region, clear of its frame.
+    float below = 0.5f + 0.02f;
+    for (const game::FocusProbe& focus : simulation.layout().focus)
+      below = std::max(below, 0.5f + focus.region.y / 2 + 0.02f);
+    const float width = ImGui::CalcTextSize(text.c_str()).x;
+    shadowedText(list, ImVec2(picture.x + (picture.width - width) / 2, at(0, below).y), white, text,
+                 size);
   }
   // A message a level rule shows, centred below the focus region.
   if (const std::optional<std::string> message = simulation.logic().message(simulation.tick())) {
@@ -167,8 +197,13 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
                                  : "Lost: " + simulation.rules().reason() + ". Restarting.";
     const float big = size * 1.5f;
     const float width = ImGui::CalcTextSize(text.c_str()).x * 1.5f;
-    shadowedText(list, ImVec2(picture.x + (picture.width - width) / 2, at(0, 0.3f).y),
-                 outcome == game::Outcome::Won ? green : vermillion, text, big);
+    const ImVec2 corner(picture.x + (picture.width - width) / 2, at(0, 0.3f).y);
+    // On a dark panel, so the sentence reads over any wall (it was green on grey, 1.5:1).
+    const float pad = size * 0.6f;
+    list->AddRectFilled(ImVec2(corner.x - pad, corner.y - pad),
+                        ImVec2(corner.x + width + pad, corner.y + big + pad),
+                        IM_COL32(0, 0, 0, 200), size * 0.4f);
+    shadowedText(list, corner, outcome == game::Outcome::Won ? green : vermillion, text, big);
   }
   if (authorOverlay) drawAuthorOverlay(played);
 }

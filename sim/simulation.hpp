@@ -61,6 +61,7 @@ class Simulation {
   // cadence; probes are unaffected. Returns RGBA8 rows top to bottom.
   const std::vector<uint8_t>& renderPicture();
   render::Renderer& renderer() { return *renderer_; }
+  const render::Renderer& renderer() const { return *renderer_; }
 
  private:
   void syncRenderer();

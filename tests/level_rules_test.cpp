@@ -99,7 +99,7 @@ TEST(Rules, FocusRisesToWinOnTheExactTick) {
   s.run(1, [&](uint64_t) { return s.values({0.5f}, {}); });  // coverage ≥ goal: still rising
   EXPECT_EQ(s.rules.outcome(), Outcome::Won);
   EXPECT_EQ(s.rules.outcomeTick(), 120u);
-  EXPECT_EQ(s.rules.reason(), "focus on \"orb\": met");
+  EXPECT_EQ(s.rules.reason(), "Hold \"orb\" in view: met");
 }
 
 TEST(Rules, FocusFallsWhileUncoveredAndKeepsTheLastReadings) {
@@ -141,7 +141,7 @@ TEST(Rules, LitMustHoldContinuously) {
   s.run(100, [&](uint64_t tick) { return s.values({}, {tick == 21 ? 0.49f : 0.5f}); });
   EXPECT_EQ(s.rules.outcome(), Outcome::Won);
   EXPECT_EQ(s.rules.outcomeTick(), 22u + 29u);  // the run restarts at tick 22
-  EXPECT_EQ(s.rules.reason(), "light \"sensor\" with \"lamp\": met");
+  EXPECT_EQ(s.rules.reason(), "Light \"sensor\" with \"lamp\": met");
 }
 
 TEST(Rules, LitHoldRoundsUpToWholeTicks) {
@@ -203,7 +203,7 @@ TEST(Rules, StealthLosesAfterSecondsAboveTheLimit) {
   });
   EXPECT_EQ(s.rules.outcome(), Outcome::Lost);
   EXPECT_EQ(s.rules.outcomeTick(), 151u + 89u);
-  EXPECT_EQ(s.rules.reason(), "seen by \"lamp\" for 1.5 s");
+  EXPECT_EQ(s.rules.reason(), "Seen by \"lamp\"");
 }
 
 TEST(Rules, FallingBelowLoses) {
@@ -216,7 +216,21 @@ TEST(Rules, FallingBelowLoses) {
   // Semi-implicit Euler from rest: y(n) = −g·dt²·n(n+1)/2 first drops below −1 at n = 27.
   EXPECT_EQ(s.rules.outcome(), Outcome::Lost);
   EXPECT_EQ(s.rules.outcomeTick(), 27u);
-  EXPECT_EQ(s.rules.reason(), "fell below -1 m");
+  EXPECT_EQ(s.rules.reason(), "Fell");
+}
+
+TEST(Rules, a_level_label_names_the_goal_and_the_loss_in_the_players_words) {
+  game::Level level = baseLevel(false);
+  LoseCondition fall{LoseCondition::Type::Fall};
+  fall.below = -1.0f;
+  fall.label = "Fell off the ledge";
+  level.lose = {fall};
+  level.goal = focus(1.0f, 0.0f);
+  level.goal->label = "Hold the orb in view";
+  Session s(level);
+  EXPECT_EQ(s.rules.progress()[0].label, "Hold the orb in view");
+  s.run(100, [&](uint64_t) { return s.values({}, {}); });
+  EXPECT_EQ(s.rules.reason(), "Fell off the ledge");
 }
 
 TEST(Rules, AllNeedsEveryChildOnTheSameTick) {
@@ -228,9 +242,9 @@ TEST(Rules, AllNeedsEveryChildOnTheSameTick) {
   EXPECT_EQ(s.rules.outcome(), Outcome::Won);
   EXPECT_EQ(s.rules.outcomeTick(), 90u);
   ASSERT_EQ(s.rules.progress().size(), 3u);
-  EXPECT_EQ(s.rules.progress()[0].label, "all of 2");
+  EXPECT_EQ(s.rules.progress()[0].label, "All 2 of these");
   EXPECT_TRUE(s.rules.progress()[1].met);
-  EXPECT_EQ(s.rules.reason(), "all of 2: met");
+  EXPECT_EQ(s.rules.reason(), "All 2 of these: met");
 }
 
 TEST(Rules, AllIsNotWonByChildrenMetAtDifferentTimes) {
@@ -259,8 +273,8 @@ TEST(Rules, AnyWinsWithTheFirstChild) {
   EXPECT_EQ(s.rules.outcome(), Outcome::Won);
   EXPECT_EQ(s.rules.outcomeTick(), 30u);
   ASSERT_EQ(s.rules.progress().size(), 5u);  // any, focus, all, lit, reach
-  EXPECT_EQ(s.rules.progress()[0].label, "any of 2");
-  EXPECT_EQ(s.rules.progress()[4].label, "reach (0, 0, 0)");
+  EXPECT_EQ(s.rules.progress()[0].label, "Any one of 2");
+  EXPECT_EQ(s.rules.progress()[4].label, "Reach the goal");
   EXPECT_FALSE(s.rules.progress()[1].met);
   EXPECT_TRUE(s.rules.progress()[2].met);
 }

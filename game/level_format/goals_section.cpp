@@ -12,9 +12,10 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
   result.type = static_cast<Goal::Type>(type);
   switch (result.type) {
     case Goal::Type::Focus:
-      reader.checkKeys(goal, pointer,
-                       {"type", "orb", "region", "coverage", "rise_per_second", "fall_per_second"},
-                       {"orb"}, what);
+      reader.checkKeys(
+          goal, pointer,
+          {"type", "label", "orb", "region", "coverage", "rise_per_second", "fall_per_second"},
+          {"orb"}, what);
       result.entity =
           reader.readReference(goal["orb"], childPointer(pointer, "orb"), IdKind::Entity);
       if (goal.contains("region")) {
@@ -30,7 +31,8 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
                                                        kNonNegativeNumber, result.fallPerSecond);
       break;
     case Goal::Type::Lit:
-      reader.checkKeys(goal, pointer, {"type", "sensor", "light", "threshold", "hold_seconds"},
+      reader.checkKeys(goal, pointer,
+                       {"type", "label", "sensor", "light", "threshold", "hold_seconds"},
                        {"sensor", "light"}, what);
       result.entity =
           reader.readReference(goal["sensor"], childPointer(pointer, "sensor"), IdKind::Entity);
@@ -42,7 +44,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
                                                      kNonNegativeNumber, result.holdSeconds);
       break;
     case Goal::Type::Reach: {
-      reader.checkKeys(goal, pointer, {"type", "min", "max"}, {"min", "max"}, what);
+      reader.checkKeys(goal, pointer, {"type", "label", "min", "max"}, {"min", "max"}, what);
       result.min = reader.readVec3(goal["min"], childPointer(pointer, "min"), kCoordinate);
       const std::string maxPointer = childPointer(pointer, "max");
       result.max = reader.readVec3(goal["max"], maxPointer, kCoordinate);
@@ -59,7 +61,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
     }
     case Goal::Type::All:
     case Goal::Type::Any: {
-      reader.checkKeys(goal, pointer, {"type", "of"}, {"of"}, what);
+      reader.checkKeys(goal, pointer, {"type", "label", "of"}, {"of"}, what);
       const OrderedJson& children = goal["of"];
       const std::string ofPointer = childPointer(pointer, "of");
       if (!children.is_array() || children.empty() || children.size() > kMaxGoalChildren) {
@@ -76,6 +78,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
       break;
     }
   }
+  result.label = reader.readOptionalLabel(goal, pointer);
   return result;
 }
 

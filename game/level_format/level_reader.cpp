@@ -172,6 +172,13 @@ std::string LevelReader::readOptionalString(const OrderedJson& object, const cha
              : std::string();
 }
 
+std::string LevelReader::readOptionalLabel(const OrderedJson& object,
+                                           const std::string& pointer) const {
+  return object.contains("label")
+             ? readString(object["label"], childPointer(pointer, "label"), 1, kMaxNameCharacters)
+             : std::string();
+}
+
 glm::vec3 LevelReader::readTint(const OrderedJson& value, const std::string& pointer) const {
   const auto numbers = readNumbers<3>(value, pointer, kUnitInterval, "3 numbers in [0, 1]");
   return {numbers[0], numbers[1], numbers[2]};

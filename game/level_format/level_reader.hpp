@@ -90,6 +90,8 @@ class LevelReader : public JsonReader {
   std::string readName(const OrderedJson& value, const std::string& pointer) const;
   std::string readOptionalString(const OrderedJson& object, const char* key,
                                  const std::string& pointer) const;
+  // A goal's or lose condition's words for the player ("Reach the gate"), 1 to 80 characters.
+  std::string readOptionalLabel(const OrderedJson& object, const std::string& pointer) const;
   // Linear multipliers, not colours: no sRGB conversion.
   glm::vec3 readTint(const OrderedJson& value, const std::string& pointer) const;
   glm::vec3 readDirection(const OrderedJson& value, const std::string& pointer) const;

@@ -13,8 +13,9 @@ std::vector<LoseCondition> readLoseConditions(const LevelReader& reader, const O
     const std::string entryPointer = childPointer(pointer, i);
     LoseCondition condition;
     if (reader.readType(entry, entryPointer, kTypes) == 0) {
-      reader.checkKeys(entry, entryPointer, {"type", "watcher", "exposure_limit", "seconds"},
-                       {"watcher"}, "a stealth condition");
+      reader.checkKeys(entry, entryPointer,
+                       {"type", "label", "watcher", "exposure_limit", "seconds"}, {"watcher"},
+                       "a stealth condition");
       condition.type = LoseCondition::Type::Stealth;
       condition.light = reader.readReference(entry["watcher"],
                                              childPointer(entryPointer, "watcher"), IdKind::Light);
@@ -23,11 +24,13 @@ std::vector<LoseCondition> readLoseConditions(const LevelReader& reader, const O
       condition.seconds = reader.readOptionalNumber(entry, "seconds", entryPointer, kPositiveNumber,
                                                     condition.seconds);
     } else {
-      reader.checkKeys(entry, entryPointer, {"type", "below"}, {"below"}, "a fall condition");
+      reader.checkKeys(entry, entryPointer, {"type", "label", "below"}, {"below"},
+                       "a fall condition");
       condition.type = LoseCondition::Type::Fall;
       condition.below =
           reader.readNumber(entry["below"], childPointer(entryPointer, "below"), kCoordinate);
     }
+    condition.label = reader.readOptionalLabel(entry, entryPointer);
     conditions.push_back(condition);
   }
   return conditions;
