@@ -26,8 +26,10 @@ int commandValidate(const Options& options) {
     }
     try {
       const game::Level level = game::loadLevel(file, levelLoadOptions());
-      std::printf("%s: ok (%zu entities, %zu meshes, %zu lights)\n", file.c_str(),
-                  level.entities.size(), level.meshes.size(), level.lights.size());
+      std::printf("%s: ok (%s, %s, %s)\n", file.c_str(),
+                  counted(level.entities.size(), "entity", "entities").c_str(),
+                  counted(level.meshes.size(), "mesh", "meshes").c_str(),
+                  counted(level.lights.size(), "light").c_str());
     } catch (const game::LevelError& error) {
       std::fprintf(stderr, "%s\n", error.what());
       ++failures;

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include "game/primitives.hpp"
+#include "scene/color.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
 
@@ -304,3 +307,40 @@ TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_mos
 }
 
 }  // namespace
+
+// A camera ray that meets an area light sees the light's own radiance (the glowing shape its soft
+// shadows come from): a disk or rectangle from the side it emits to, a sphere from anywhere.
+TEST_F(SoftShadowTest, area_lights_are_seen_as_their_radiance_from_their_emitting_side) {
+  auto centrePixel = [&](const scene::LightDesc& light) {
+    SceneBuilder builder;
+    builder.material(scene::MaterialDesc{});
+    builder.light(light);
+    auto renderer = makeRenderer(builder.scene);
+    scene::FrameDesc frame = frameAt(0);
+    frame.camera = scene::CameraDesc{};  // at the origin, looking down -Z
+    renderer->renderFrame(frame, true);
+    const std::vector<uint8_t>& pixels = renderer->pixels();
+    return glm::ivec3(glm::make_vec3(&pixels[(kSize / 2 * kSize + kSize / 2) * 4]));
+  };
+  // Identity tonemap: the pixel is the sRGB encoding of the radiance, 0.5 -> 188.
+  const int expected = int(std::lround(scene::linearToSrgb(0.5f) * 255.0f));
+  scene::LightDesc disk;
+  disk.type = scene::LightType::Disk;
+  disk.position = glm::vec3(0, 0, -3);
+  disk.direction = glm::vec3(0, 0, 1);  // emitting towards the camera
+  disk.radius = 0.5f;
+  disk.intensity = 0.5f;
+  EXPECT_NEAR(centrePixel(disk).g, expected, 1);
+  disk.direction = glm::vec3(0, 0, -1);  // its back: not drawn, the black sky shows
+  EXPECT_EQ(centrePixel(disk).g, 0);
+  scene::LightDesc rectangle = disk;
+  rectangle.type = scene::LightType::Rectangle;
+  rectangle.direction = glm::vec3(0, 0, 1);
+  rectangle.size = glm::vec2(1.0f, 0.5f);
+  EXPECT_NEAR(centrePixel(rectangle).g, expected, 1);
+  scene::LightDesc sphere = disk;
+  sphere.type = scene::LightType::Sphere;
+  EXPECT_NEAR(centrePixel(sphere).g, expected, 1);
+  sphere.enabled = false;  // switched off: nothing to see
+  EXPECT_EQ(centrePixel(sphere).g, 0);
+}
