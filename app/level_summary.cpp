@@ -16,14 +16,6 @@ std::string percent(float share) {
   return number(double(share) * 100.0) + "%";
 }
 
-std::string entityName(const game::Level& level, uint32_t entity) {
-  return "\"" + level.entities[entity].id + "\"";
-}
-
-std::string lightName(const game::Level& level, uint32_t light) {
-  return "\"" + level.lightIds[light] + "\"";
-}
-
 }  // namespace
 
 std::string counted(std::size_t count, const std::string& noun, const std::string& plural) {
@@ -33,12 +25,14 @@ std::string counted(std::size_t count, const std::string& noun, const std::strin
 std::string describeGoal(const game::Level& level, const game::Goal& goal) {
   switch (goal.type) {
     case game::Goal::Type::Focus:
-      return "keep " + entityName(level, goal.entity) + " in the centre of the view (covering " +
-             percent(goal.coverage) + " of the middle " + percent(goal.region.x) + " x " +
-             percent(goal.region.y) + ") for " + number(1.0 / double(goal.risePerSecond)) + " s";
+      return "keep " + game::quotedEntityId(level, goal.entity) +
+             " in the centre of the view (covering " + percent(goal.coverage) + " of the middle " +
+             percent(goal.region.x) + " x " + percent(goal.region.y) + ") for " +
+             number(1.0 / double(goal.risePerSecond)) + " s";
     case game::Goal::Type::Lit:
-      return "light " + entityName(level, goal.entity) + " with " + lightName(level, goal.light) +
-             " (exposure at least " + percent(goal.threshold) +
+      return "light " + game::quotedEntityId(level, goal.entity) + " with " +
+             game::quotedLightId(level, goal.light) + " (exposure at least " +
+             percent(goal.threshold) +
              (goal.holdSeconds > 0.0f ? " for " + number(goal.holdSeconds) + " s" : "") + ")";
     case game::Goal::Type::Reach:
       return "reach the box x " + number(goal.min.x) + ".." + number(goal.max.x) + ", y " +
@@ -58,7 +52,7 @@ std::string describeGoal(const game::Level& level, const game::Goal& goal) {
 std::string describeLoss(const game::Level& level, const game::LoseCondition& lose) {
   if (lose.type == game::LoseCondition::Type::Fall)
     return "falling below " + number(lose.below) + " m";
-  return "being seen by " + lightName(level, lose.light) + " (exposure above " +
+  return "being seen by " + game::quotedLightId(level, lose.light) + " (exposure above " +
          percent(lose.exposureLimit) + ") for " + number(lose.seconds) + " s";
 }
 

@@ -13,6 +13,22 @@ glm::mat4 entityTransform(const Entity& entity) {
   return glm::scale(transform, entity.scale);
 }
 
+namespace {
+
+std::string quotedId(const std::string& id, uint32_t index) {
+  return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
+}
+
+}  // namespace
+
+std::string quotedEntityId(const Level& level, uint32_t entity) {
+  return quotedId(entity < level.entities.size() ? level.entities[entity].id : "", entity);
+}
+
+std::string quotedLightId(const Level& level, uint32_t light) {
+  return quotedId(light < level.lightIds.size() ? level.lightIds[light] : "", light);
+}
+
 scene::SceneDesc buildSceneDesc(const Level& level) {
   scene::SceneDesc scene;
   scene.meshes = level.meshes;

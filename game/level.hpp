@@ -106,6 +106,11 @@ struct Level {
 
 glm::mat4 entityTransform(const Entity& entity);
 
+// An entity's or light's id in double quotes, for messages and labels; "#2" for one without an
+// id (levels built in code).
+std::string quotedEntityId(const Level& level, uint32_t entity);
+std::string quotedLightId(const Level& level, uint32_t light);
+
 // What the renderer needs to draw the level (entities at their start positions).
 scene::SceneDesc buildSceneDesc(const Level& level);
 

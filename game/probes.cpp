@@ -5,22 +5,12 @@ namespace game {
 namespace {
 
 // Depth first, parents before children, so probe indices follow the goal tree's file order.
-// An id in quotes; levels built in code may lack ids ("#2").
-std::string quotedId(const std::string& id, uint32_t index) {
-  return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
-}
-
-std::string lightName(const Level& level, uint32_t light) {
-  return quotedId(light < level.lightIds.size() ? level.lightIds[light] : "", light);
-}
-
 std::string litLabel(const Level& level, uint32_t sensor, uint32_t light) {
-  const std::string& id = sensor < level.entities.size() ? level.entities[sensor].id : "";
-  return quotedId(id, sensor) + " lit by " + lightName(level, light);
+  return quotedEntityId(level, sensor) + " lit by " + quotedLightId(level, light);
 }
 
 std::string seenLabel(const Level& level, uint32_t watcher) {
-  return "Seen by " + lightName(level, watcher);
+  return "Seen by " + quotedLightId(level, watcher);
 }
 
 void addGoalProbes(const Level& level, const Goal& goal, ProbeLayout& layout) {

@@ -16,18 +16,6 @@ uint32_t ticksFor(float seconds) {
   return uint32_t(std::max(1.0, ticks));
 }
 
-std::string quoted(const std::string& id, uint32_t index) {
-  return "\"" + (id.empty() ? "#" + std::to_string(index) : id) + "\"";
-}
-
-std::string entityName(const Level& level, uint32_t entity) {
-  return quoted(entity < level.entities.size() ? level.entities[entity].id : "", entity);
-}
-
-std::string lightName(const Level& level, uint32_t light) {
-  return quoted(light < level.lightIds.size() ? level.lightIds[light] : "", light);
-}
-
 }  // namespace
 
 const char* outcomeName(Outcome outcome) {
@@ -46,7 +34,7 @@ Rules::Rules(const Level& level, const ProbeLayout& layout) {
   uint32_t focusCount = 0, exposureCount = 0;
   if (level.goal) addNode(*level.goal, level, focusCount, exposureCount);
   for (const LoseCondition& condition : level.lose) {
-    Loss loss{condition, lightName(level, condition.light)};
+    Loss loss{condition, quotedLightId(level, condition.light)};
     if (condition.type == LoseCondition::Type::Stealth) {
       loss.probe = int32_t(exposureCount++);
       loss.needTicks = ticksFor(condition.seconds);
@@ -72,12 +60,13 @@ uint32_t Rules::addNode(const Goal& goal, const Level& level, uint32_t& focusCou
   switch (goal.type) {
     case Goal::Type::Focus:
       node.probe = int32_t(focusCount++);
-      label = "Hold " + entityName(level, goal.entity) + " in view";
+      label = "Hold " + quotedEntityId(level, goal.entity) + " in view";
       break;
     case Goal::Type::Lit:
       node.probe = int32_t(exposureCount++);
       node.needTicks = ticksFor(goal.holdSeconds);
-      label = "Light " + entityName(level, goal.entity) + " with " + lightName(level, goal.light);
+      label = "Light " + quotedEntityId(level, goal.entity) + " with " +
+              quotedLightId(level, goal.light);
       break;
     case Goal::Type::Reach:
       label = "Reach the goal";

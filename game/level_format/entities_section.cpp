@@ -1,6 +1,7 @@
 #include "game/level_format/sections.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 // The "entities" section, with the movers and interactables an entity may be.
 namespace game::level_format {
@@ -99,14 +100,7 @@ Mover readMover(const LevelReader& reader, const OrderedJson& mover, const std::
 void readRange(const LevelReader& reader, const OrderedJson& object, const std::string& pointer,
                const char* minKey, const char* maxKey, const char* startKey, const NumberRule& rule,
                Interactable& result) {
-  result.min = reader.readNumber(object[minKey], childPointer(pointer, minKey), rule);
-  const std::string maxPointer = childPointer(pointer, maxKey);
-  result.max = reader.readNumber(object[maxKey], maxPointer, rule);
-  if (result.max < result.min) {
-    reader.failValue(maxPointer, std::string("expected a number >= ") + minKey + " (" +
-                                     formatNumber(result.min) + "), got " +
-                                     describeValue(object[maxKey]));
-  }
+  std::tie(result.min, result.max) = reader.readOrderedPair(object, pointer, minKey, maxKey, rule);
   result.start = std::clamp(0.0f, result.min, result.max);
   if (object.contains(startKey)) {
     const std::string startPointer = childPointer(pointer, startKey);

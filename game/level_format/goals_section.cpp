@@ -45,18 +45,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
       break;
     case Goal::Type::Reach: {
       reader.checkKeys(goal, pointer, {"type", "label", "min", "max"}, {"min", "max"}, what);
-      result.min = reader.readVec3(goal["min"], childPointer(pointer, "min"), kCoordinate);
-      const std::string maxPointer = childPointer(pointer, "max");
-      result.max = reader.readVec3(goal["max"], maxPointer, kCoordinate);
-      for (glm::length_t axis = 0; axis < 3; ++axis) {
-        if (!(result.max[axis] > result.min[axis])) {
-          const auto index = static_cast<std::size_t>(axis);
-          reader.failValue(childPointer(maxPointer, index),
-                           "expected a number > min[" + std::to_string(index) + "] (" +
-                               formatNumber(result.min[axis]) + "), got " +
-                               describeValue(goal["max"][index]));
-        }
-      }
+      reader.readBox(goal, pointer, result.min, result.max);
       break;
     }
     case Goal::Type::All:

@@ -224,6 +224,35 @@ glm::vec3 LevelReader::readOptionalColor(const OrderedJson& object, const char* 
   return object.contains(key) ? readColor(object[key], childPointer(pointer, key)) : fallback;
 }
 
+void LevelReader::readBox(const OrderedJson& object, const std::string& pointer, glm::vec3& min,
+                          glm::vec3& max) const {
+  min = readVec3(object["min"], childPointer(pointer, "min"), kCoordinate);
+  const std::string maxPointer = childPointer(pointer, "max");
+  max = readVec3(object["max"], maxPointer, kCoordinate);
+  for (glm::length_t axis = 0; axis < 3; ++axis) {
+    if (!(max[axis] > min[axis])) {
+      const auto index = static_cast<std::size_t>(axis);
+      failValue(childPointer(maxPointer, index),
+                "expected a number > min[" + std::to_string(index) + "] (" +
+                    formatNumber(min[axis]) + "), got " + describeValue(object["max"][index]));
+    }
+  }
+}
+
+std::pair<float, float> LevelReader::readOrderedPair(const OrderedJson& object,
+                                                     const std::string& pointer, const char* minKey,
+                                                     const char* maxKey,
+                                                     const NumberRule& rule) const {
+  const float low = readNumber(object[minKey], childPointer(pointer, minKey), rule);
+  const std::string maxPointer = childPointer(pointer, maxKey);
+  const float high = readNumber(object[maxKey], maxPointer, rule);
+  if (high < low) {
+    failValue(maxPointer, std::string("expected a number >= ") + minKey + " (" + formatNumber(low) +
+                              "), got " + describeValue(object[maxKey]));
+  }
+  return {low, high};
+}
+
 void LevelReader::addTriangles(std::size_t triangles, const std::string& pointer) {
   if (triangles > kMaxTriangles - totalTriangles_) {
     failValue(pointer, "this mesh brings the level to " +

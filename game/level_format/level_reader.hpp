@@ -99,6 +99,14 @@ class LevelReader : public JsonReader {
   glm::vec3 readColor(const OrderedJson& value, const std::string& pointer) const;
   glm::vec3 readOptionalColor(const OrderedJson& object, const char* key,
                               const std::string& pointer, const glm::vec3& fallback) const;
+  // The box of "min" and "max" corners, min < max on every axis (a reach goal, an inside
+  // condition).
+  void readBox(const OrderedJson& object, const std::string& pointer, glm::vec3& min,
+               glm::vec3& max) const;
+  // The numbers at `minKey` <= `maxKey` (an interactable's range, a rotation condition's).
+  std::pair<float, float> readOrderedPair(const OrderedJson& object, const std::string& pointer,
+                                          const char* minKey, const char* maxKey,
+                                          const NumberRule& rule) const;
 
   // ----- files (level_files.cpp) -----
 

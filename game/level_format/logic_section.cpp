@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <functional>
 #include <map>
+#include <tuple>
 
 #include "game/level_format/sections.hpp"
 
@@ -102,18 +103,7 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
       break;
     case Condition::Type::Inside: {
       reader.checkKeys(json, pointer, {"type", "min", "max", "hold_seconds"}, {"min", "max"}, what);
-      condition.min = reader.readVec3(json["min"], childPointer(pointer, "min"), kCoordinate);
-      const std::string maxPointer = childPointer(pointer, "max");
-      condition.max = reader.readVec3(json["max"], maxPointer, kCoordinate);
-      for (glm::length_t axis = 0; axis < 3; ++axis) {
-        if (!(condition.max[axis] > condition.min[axis])) {
-          const auto index = static_cast<std::size_t>(axis);
-          reader.failValue(childPointer(maxPointer, index),
-                           "expected a number > min[" + std::to_string(index) + "] (" +
-                               formatNumber(condition.min[axis]) + "), got " +
-                               describeValue(json["max"][index]));
-        }
-      }
+      reader.readBox(json, pointer, condition.min, condition.max);
       break;
     }
     case Condition::Type::Rotation:
@@ -126,15 +116,8 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
       condition.entity = readInteractableReference(
           reader, level, json["entity"], childPointer(pointer, "entity"),
           rotation ? Interactable::Type::Rotate : Interactable::Type::Slide, usedBy);
-      const NumberRule& rule = rotation ? kAnyNumber : kCoordinate;
-      condition.low = reader.readNumber(json[low], childPointer(pointer, low), rule);
-      const std::string highPointer = childPointer(pointer, high);
-      condition.high = reader.readNumber(json[high], highPointer, rule);
-      if (condition.high < condition.low) {
-        reader.failValue(highPointer, std::string("expected a number >= ") + low + " (" +
-                                          formatNumber(condition.low) + "), got " +
-                                          describeValue(json[high]));
-      }
+      std::tie(condition.low, condition.high) =
+          reader.readOrderedPair(json, pointer, low, high, rotation ? kAnyNumber : kCoordinate);
       break;
     }
     case Condition::Type::Switch:
