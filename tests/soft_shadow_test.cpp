@@ -344,3 +344,30 @@ TEST_F(SoftShadowTest, area_lights_are_seen_as_their_radiance_from_their_emittin
   sphere.enabled = false;  // switched off: nothing to see
   EXPECT_EQ(centrePixel(sphere).g, 0);
 }
+
+// The same light seen in a mirror: the view turned 90 degrees by a mirror at 45 degrees meets
+// the disk, and the pixel is the light's radiance times the mirror's reflectance.
+TEST_F(SoftShadowTest, an_area_light_is_seen_in_a_mirror) {
+  SceneBuilder builder;
+  scene::MaterialDesc mirror;
+  mirror.kind = scene::MaterialKind::Mirror;
+  mirror.mirrorTint = glm::vec3(0.5f);
+  const glm::mat4 turned =
+      glm::rotate(at({0, 0, -3}), glm::radians(45.0f), glm::vec3(0, 1, 0));  // normal (1, 0, 1)
+  builder.instance(builder.mesh(game::primitives::box({2.0f, 2.0f, 0.02f})),
+                   builder.material(mirror), turned);
+  scene::LightDesc disk;
+  disk.type = scene::LightType::Disk;
+  disk.position = glm::vec3(3, 0, -3);
+  disk.direction = glm::vec3(-1, 0, 0);  // emitting back towards the mirror
+  disk.radius = 0.5f;
+  disk.intensity = 1.0f;
+  builder.light(disk);
+  auto renderer = makeRenderer(builder.scene);
+  scene::FrameDesc frame = frameAt(0);
+  frame.camera = scene::CameraDesc{};
+  renderer->renderFrame(frame, true);
+  const std::vector<uint8_t>& pixels = renderer->pixels();
+  const int centre = pixels[(kSize / 2 * kSize + kSize / 2) * 4 + 1];
+  EXPECT_NEAR(centre, int(std::lround(scene::linearToSrgb(0.5f) * 255.0f)), 1);
+}
