@@ -18,11 +18,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
           {"orb"}, what);
       result.entity =
           reader.readReference(goal["orb"], childPointer(pointer, "orb"), IdKind::Entity);
-      if (goal.contains("region")) {
-        result.region =
-            reader.readVec2(goal["region"], childPointer(pointer, "region"), kUnitFraction,
-                            "an array of 2 numbers [width, height] in (0, 1]");
-      }
+      result.region = reader.readOptionalRegion(goal, pointer, result.region);
       result.coverage =
           reader.readOptionalNumber(goal, "coverage", pointer, kUnitFraction, result.coverage);
       result.risePerSecond = reader.readOptionalNumber(goal, "rise_per_second", pointer,

@@ -224,6 +224,13 @@ glm::vec3 LevelReader::readOptionalColor(const OrderedJson& object, const char* 
   return object.contains(key) ? readColor(object[key], childPointer(pointer, key)) : fallback;
 }
 
+glm::vec2 LevelReader::readOptionalRegion(const OrderedJson& object, const std::string& pointer,
+                                          const glm::vec2& fallback) const {
+  if (!object.contains("region")) return fallback;
+  return readVec2(object["region"], childPointer(pointer, "region"), kUnitFraction,
+                  "an array of 2 numbers [width, height] in (0, 1]");
+}
+
 void LevelReader::readBox(const OrderedJson& object, const std::string& pointer, glm::vec3& min,
                           glm::vec3& max) const {
   min = readVec3(object["min"], childPointer(pointer, "min"), kCoordinate);

@@ -99,6 +99,9 @@ class LevelReader : public JsonReader {
   glm::vec3 readColor(const OrderedJson& value, const std::string& pointer) const;
   glm::vec3 readOptionalColor(const OrderedJson& object, const char* key,
                               const std::string& pointer, const glm::vec3& fallback) const;
+  // A focus region: [width, height] as fractions of the screen, at "region" or `fallback`.
+  glm::vec2 readOptionalRegion(const OrderedJson& object, const std::string& pointer,
+                               const glm::vec2& fallback) const;
   // The box of "min" and "max" corners, min < max on every axis (a reach goal, an inside
   // condition).
   void readBox(const OrderedJson& object, const std::string& pointer, glm::vec3& min,

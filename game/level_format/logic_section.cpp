@@ -75,11 +75,7 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
                        {"orb"}, what);
       condition.entity =
           reader.readReference(json["orb"], childPointer(pointer, "orb"), IdKind::Entity);
-      if (json.contains("region")) {
-        condition.region =
-            reader.readVec2(json["region"], childPointer(pointer, "region"), kUnitFraction,
-                            "an array of 2 numbers [width, height] in (0, 1]");
-      }
+      condition.region = reader.readOptionalRegion(json, pointer, condition.region);
       condition.coverage =
           reader.readOptionalNumber(json, "coverage", pointer, kUnitFraction, condition.coverage);
       break;
