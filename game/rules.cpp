@@ -61,6 +61,7 @@ uint32_t Rules::addNode(const Goal& goal, const Level& level, uint32_t& focusCou
     case Goal::Type::Focus:
       node.probe = int32_t(focusCount++);
       label = "Hold " + quotedEntityId(level, goal.entity) + " in view";
+      progress_[index].orb = int32_t(goal.entity);
       break;
     case Goal::Type::Lit:
       node.probe = int32_t(exposureCount++);

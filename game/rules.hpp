@@ -34,6 +34,7 @@ struct GoalProgress {
   std::string label;      // the goal's "label", else "Hold \"orb\" in view", "All 3 of these", ...
   float progress = 0.0f;  // [0, 1]
   bool met = false;
+  int32_t orb = -1;  // a focus goal's orb (index into Level::entities), else -1
 };
 
 class Rules {

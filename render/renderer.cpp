@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -121,6 +123,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   }
   for (const scene::LightDesc& light : scene.lights) {
     gpuLights_.push_back(toGpuLight(light));
+    lightRadiances_.push_back(glm::vec3(gpuLights_.back().radianceRadius));
     lightPositions_.push_back(light.position);
   }
   lightCount_ = static_cast<uint32_t>(gpuLights_.size());
@@ -505,6 +508,22 @@ void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
     throw RenderError("setInstanceVisible: no such instance");
   topLevel_->setVisible(instance, visible);
   tlasStale_ = true;
+}
+
+void Renderer::setInstanceGlow(uint32_t instance, float glow) {
+  if (instance >= topLevel_->instanceCount())
+    throw RenderError("setInstanceGlow: no such instance");
+  const uint32_t bits = std::bit_cast<uint32_t>(glow);
+  instances_.write(&bits, sizeof bits,
+                   instance * sizeof(gpu::GpuInstance) + offsetof(gpu::GpuInstance, geometry) +
+                       3 * sizeof(uint32_t));
+}
+
+void Renderer::setLightTint(uint32_t light, const glm::vec3& tint) {
+  if (light >= gpuLights_.size()) throw RenderError("setLightTint: no such light");
+  const glm::vec3 radiance = lightRadiances_[light] * tint;
+  gpuLights_[light].radianceRadius = glm::vec4(radiance, gpuLights_[light].radianceRadius.w);
+  lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {

@@ -84,6 +84,10 @@ class Renderer {
   void setLightEnabled(uint32_t light, bool enabled);
   // A hidden instance is seen by no ray (camera, shadow, glass, mirror or probe).
   void setInstanceVisible(uint32_t instance, bool visible);
+  // Extra emitted light, `glow` times the surface's albedo (0: none), for feedback in the world.
+  void setInstanceGlow(uint32_t instance, float glow);
+  // The light's colour times `tint` (white: as the level made it).
+  void setLightTint(uint32_t light, const glm::vec3& tint);
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
@@ -148,6 +152,7 @@ class Renderer {
   bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_
   std::vector<gpu::GpuLight> gpuLights_;   // render space (positions relative to the origin)
   std::vector<glm::vec3> lightPositions_;  // world space
+  std::vector<glm::vec3> lightRadiances_;  // as the level made them, before any tint
   std::vector<std::unique_ptr<Texture>> textures_;
   VkSampler sampler_ = VK_NULL_HANDLE;
   std::unique_ptr<StorageImage> hdrImage_;

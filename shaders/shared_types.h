@@ -92,7 +92,9 @@ struct FrameUniforms {
 };
 
 struct GpuInstance {
-  uvec4 geometry;  // x: first index, y: vertex offset, z: material, w: unused
+  // x: first index, y: vertex offset, z: material, w: glow (float bits): light the game adds to
+  // the surface, times its albedo (an orb in focus, a lit sensor)
+  uvec4 geometry;
   // Rows of the previous frame's object-to-world times the current world-to-object, in render
   // space: where a point on this instance was one frame ago (identity when it did not move).
   vec4 previousFromCurrent[3];

@@ -1,5 +1,7 @@
 #include "sim/simulation.hpp"
 
+#include <algorithm>
+
 #include "render/context.hpp"
 #include "render/shader_compiler.hpp"
 
@@ -44,6 +46,8 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
   }
   for (const scene::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
   visibleStates_.assign(level.entities.size(), true);
+  glows_.assign(level.entities.size(), 0.0f);
+  warmths_.assign(level.lights.size(), 0.0f);
   if (options_.verticalFovDegrees) world_.setVerticalFovDegrees(*options_.verticalFovDegrees);
   transformsChanged_ = !world_.changedEntities().empty();
   // Probe frame 0 shows the world before the first tick.
@@ -78,6 +82,42 @@ void Simulation::syncRenderer() {
     if (visible == visibleStates_[entity]) continue;
     visibleStates_[entity] = visible;
     renderer_->setInstanceVisible(entity, visible);
+  }
+  syncFeedback();
+}
+
+// Feedback in the world, so the game reads without the HUD: an orb glows as its focus score
+// rises, a sensor with its exposure, and a watcher's light warms as it sees the player. Only
+// the picture changes: probes count instances and visibility, not colours.
+void Simulation::syncFeedback() {
+  constexpr float kOrbGlow = 1.5f, kSensorGlow = 1.0f;
+  const glm::vec3 kWarmest(1.6f, 0.55f, 0.35f);
+  std::vector<float> glows(glows_.size(), 0.0f), warmths(warmths_.size(), 0.0f);
+  for (const game::GoalProgress& goal : rules_.progress()) {
+    if (goal.orb < 0) continue;
+    float& glow = glows[size_t(goal.orb)];
+    glow = std::max(glow, kOrbGlow * goal.progress);
+  }
+  if (latest_) {
+    for (size_t i = 0; i < layout_.exposure.size() && i < latest_->exposure.size(); ++i) {
+      const game::ExposureProbe& probe = layout_.exposure[i];
+      const float reading = latest_->exposure[i];
+      if (probe.target == game::ExposureProbe::Target::Entity) {
+        glows[probe.entity] = std::max(glows[probe.entity], kSensorGlow * reading);
+      } else {
+        warmths[probe.light] = std::max(warmths[probe.light], reading);
+      }
+    }
+  }
+  for (uint32_t entity = 0; entity < glows.size(); ++entity) {
+    if (glows[entity] == glows_[entity]) continue;
+    glows_[entity] = glows[entity];
+    renderer_->setInstanceGlow(entity, glows[entity]);
+  }
+  for (uint32_t light = 0; light < warmths.size(); ++light) {
+    if (warmths[light] == warmths_[light]) continue;
+    warmths_[light] = warmths[light];
+    renderer_->setLightTint(light, glm::mix(glm::vec3(1.0f), kWarmest, warmths[light]));
   }
 }
 

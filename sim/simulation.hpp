@@ -65,6 +65,7 @@ class Simulation {
 
  private:
   void syncRenderer();
+  void syncFeedback();
   game::ProbeReadings renderProbeFrame();
 
   const game::Level& level_;
@@ -77,6 +78,8 @@ class Simulation {
   std::vector<std::vector<game::SurfaceSample>> sensorSamples_;  // per exposure probe
   std::vector<bool> lightStates_;
   std::vector<bool> visibleStates_;         // per entity, as the renderer last got them
+  std::vector<float> glows_;                // per entity, as the renderer last got them
+  std::vector<float> warmths_;              // per light, as the renderer last got them
   bool transformsChanged_ = false;          // since the renderer last got the entities' transforms
   std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
   std::deque<game::ProbeReadings> inFlight_;

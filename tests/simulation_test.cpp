@@ -104,3 +104,29 @@ TEST_F(SimulationTest, a_hidden_entity_leaves_camera_rays_and_shadow_rays) {
   EXPECT_GT(simulation.latestReadings()->exposure[0], 0.99f);
   EXPECT_EQ(simulation.logic().firings(1).size(), 1u);
 }
+
+// Feedback in the world: the orb of a focus goal glows as its score rises, so the picture says
+// how close the player is without the HUD; the probes do not see the glow.
+TEST_F(SimulationTest, an_orb_glows_as_its_focus_score_rises) {
+  const game::Level level = game::parseLevel(R"({
+    "format": 1, "name": "Glow",
+    "camera": { "position": [0, 1.65, 8] },
+    "environment": { "ambient": [0.3, 0.3, 0.3] },
+    "materials": { "paint": { "color": [0.2, 0.5, 0.9] } },
+    "meshes": { "ball": { "sphere": { "radius": 0.6 } }, "floor": { "box": { "size": [20, 1, 20] } } },
+    "entities": { "orb": { "mesh": "ball", "material": "paint", "position": [0, 1.65, 6] },
+                  "floor": { "mesh": "floor", "material": "paint", "position": [0, -0.5, 0] } },
+    "goal": { "type": "focus", "orb": "orb", "rise_per_second": 0.5 } })",
+                                             "glow.json");
+  sim::Simulation simulation(context(), compiler(), level, {64, 36, 4, 2});
+  auto centreGreen = [&] {
+    const std::vector<uint8_t>& pixels = simulation.renderPicture();
+    return int(pixels[(18 * 64 + 32) * 4 + 1]);
+  };
+  const int before = centreGreen();
+  while (simulation.tick() < 67) simulation.step({});  // readings from tick 8: 60 ticks of focus
+  EXPECT_NEAR(simulation.rules().progress()[0].progress, 0.5f, 1e-6f);
+  const int during = centreGreen();
+  EXPECT_GT(during, before + 40) << "before " << before << ", at half the score " << during;
+  EXPECT_EQ(simulation.latestReadings()->focusCoverage[0], 1.0f);  // the glow counts for nothing
+}
