@@ -169,7 +169,7 @@ std::string commandUsage(const std::string& name) {
   if (command == nullptr) return usage();
   std::string text = std::string("usage: sightline ") + command->name +
                      (*command->arguments ? std::string(" ") + command->arguments : "") +
-                     " [options]\n\n" + indented(command->summary, 0) + "\n";
+                     " [options]\n\n" + command->summary + "\n";
   std::string options;
   for (const OptionSpec& option : kOptions) {
     if (!takes(option, name)) continue;
