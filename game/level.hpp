@@ -62,10 +62,11 @@ struct Goal {
   float risePerSecond = 0.5f;    // Focus
   float fallPerSecond = 0.25f;   // Focus
   float threshold = 0.5f;        // Lit
-  float holdSeconds = 0.0f;      // Lit
-  glm::vec3 min{0.0f};           // Reach
-  glm::vec3 max{0.0f};           // Reach
-  std::vector<Goal> children;    // All, Any
+  scene::ExposureChannel channel = scene::ExposureChannel::Luminance;  // Lit: "color"
+  float holdSeconds = 0.0f;                                            // Lit
+  glm::vec3 min{0.0f};                                                 // Reach
+  glm::vec3 max{0.0f};                                                 // Reach
+  std::vector<Goal> children;                                          // All, Any
 };
 
 struct LoseCondition {

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "scene/probes.hpp"
+
 namespace game {
 
 struct Condition {
@@ -27,17 +29,18 @@ struct Condition {
     Not,
   };
   Type type = Type::Fired;
-  uint32_t entity = 0;              // Focus: the orb; Lit: the sensor; Rotation/Slide/Switch
-  uint32_t light = 0;               // Lit, Seen
-  glm::vec2 region{0.2f, 0.2f};     // Focus
-  float coverage = 0.5f;            // Focus
-  float threshold = 0.5f;           // Lit, Seen
-  glm::vec3 min{0.0f};              // Inside
-  glm::vec3 max{0.0f};              // Inside
-  float low = 0.0f;                 // Rotation, Slide
-  float high = 0.0f;                // Rotation, Slide
-  bool on = true;                   // Switch
-  float seconds = 0.0f;             // Timer
+  uint32_t entity = 0;           // Focus: the orb; Lit: the sensor; Rotation/Slide/Switch
+  uint32_t light = 0;            // Lit, Seen
+  glm::vec2 region{0.2f, 0.2f};  // Focus
+  float coverage = 0.5f;         // Focus
+  float threshold = 0.5f;        // Lit, Seen
+  scene::ExposureChannel channel = scene::ExposureChannel::Luminance;  // Lit: "color"
+  glm::vec3 min{0.0f};                                                 // Inside
+  glm::vec3 max{0.0f};                                                 // Inside
+  float low = 0.0f;                                                    // Rotation, Slide
+  float high = 0.0f;                                                   // Rotation, Slide
+  bool on = true;                                                      // Switch
+  float seconds = 0.0f;                                                // Timer
   std::optional<uint32_t> rule;     // Fired; Timer: since this rule last fired
   float holdSeconds = 0.0f;         // the condition must hold this long before it counts
   std::vector<Condition> children;  // All, Any; Not: exactly one

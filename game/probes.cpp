@@ -22,7 +22,7 @@ void addGoalProbes(const Level& level, const Goal& goal, ProbeLayout& layout) {
       layout.exposure.push_back(
           {ExposureProbe::Target::Entity, goal.entity, goal.light,
            goal.label.empty() ? litLabel(level, goal.entity, goal.light) : goal.label,
-           goal.threshold});
+           goal.threshold, goal.channel});
       break;
     case Goal::Type::Reach:
       break;
@@ -42,7 +42,7 @@ void addConditionProbes(const Level& level, const Condition& condition, ProbeLay
     case Condition::Type::Lit:
       layout.exposure.push_back({ExposureProbe::Target::Entity, condition.entity, condition.light,
                                  litLabel(level, condition.entity, condition.light),
-                                 condition.threshold});
+                                 condition.threshold, condition.channel});
       break;
     case Condition::Type::Seen:
       layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light,

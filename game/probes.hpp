@@ -28,6 +28,8 @@ struct ExposureProbe {
   // (a lit sensor at or above it; a watcher sees the player above it).
   std::string label;
   float threshold = 0.5f;
+  // A colour sensor counts one channel of the light (times the tints on the way).
+  scene::ExposureChannel channel = scene::ExposureChannel::Luminance;
 };
 
 // Every probe a level needs, in a fixed order: focus goals and lit goals in the order they

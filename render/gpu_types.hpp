@@ -16,6 +16,10 @@ static_assert(offsetof(GpuLight, radianceRadius) == 32);
 static_assert(sizeof(FrameCounters) == 16);
 static_assert(sizeof(ProbeSetup) == 16 * (1 + MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 static_assert(sizeof(ProbePoint) == 32);
+static_assert(sizeof(GpuRouteMirror) == 64);
+static_assert(sizeof(GpuLightRoute) == 64 + 48 + 64 * MAX_ROUTE_MIRRORS);
+static_assert(offsetof(GpuLightRoute, mirrors) == 112);
+static_assert(sizeof(LightRoutesHeader) == 16);
 static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 }  // namespace render::gpu
 

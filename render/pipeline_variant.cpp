@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "scene/flat_faces.hpp"
+
 namespace render {
 
 PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
@@ -11,8 +13,13 @@ PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
     const scene::MaterialKind kind = scene.materials[instance.material].kind;
     features.glass = features.glass || kind == scene::MaterialKind::Glass;
     features.mirrors = features.mirrors || kind == scene::MaterialKind::Mirror;
+    if (kind == scene::MaterialKind::Mirror && instance.mesh < scene.meshes.size() &&
+        !features.lightRoutes)
+      features.lightRoutes = !scene::flatFaces(scene.meshes[instance.mesh]).empty();
   }
   features.maxMirrorBounces = features.mirrors ? std::min(scene.maxMirrorBounces, 31u) : 0;
+  features.lightRoutes =
+      features.lightRoutes && !scene.lights.empty() && features.maxMirrorBounces > 0;
   for (const scene::LightDesc& light : scene.lights) {
     const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f
@@ -23,7 +30,10 @@ PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
 }
 
 PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
-  return {true, true, std::min(maxMirrorBounces, 31u), true};
+  PipelineFeatures features;
+  features.glass = features.mirrors = features.softShadows = features.lightRoutes = true;
+  features.maxMirrorBounces = std::min(maxMirrorBounces, 31u);
+  return features;
 }
 
 PipelineDescription describePipeline(const PipelineFeatures& features) {
@@ -39,6 +49,7 @@ PipelineDescription describePipeline(const PipelineFeatures& features) {
       {"HAS_MIRRORS", features.mirrors ? "1" : "0"},
       {"MAX_MIRROR_BOUNCES", std::to_string(features.mirrors ? features.maxMirrorBounces : 0)},
       {"SOFT_SHADOWS", features.softShadows ? "1" : "0"},
+      {"LIGHT_ROUTES", features.lightRoutes ? "1" : "0"},
   };
   // Only soft-shadow variants have more than one sample to choose; others keep one key.
   if (features.softShadows && features.softShadowSamples > 1)

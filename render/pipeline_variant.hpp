@@ -17,6 +17,9 @@ struct PipelineFeatures {
   uint32_t maxMirrorBounces = 0;
   bool softShadows = false;        // some light has extent: sampled visibility + denoiser
   uint32_t softShadowSamples = 1;  // shadow rays per pixel and frame for the soft lights
+  // A visible mirror has flat faces, the level has a light and mirror bounces: light is routed
+  // by the mirrors onto surfaces and sensors.
+  bool lightRoutes = false;
   bool operator==(const PipelineFeatures&) const = default;
 };
 

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 
 #include <glm/gtc/matrix_access.hpp>
 
@@ -105,6 +106,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0),
                             {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
     currentTransforms_.push_back(instance.objectToWorld);
+    instanceVisible_.push_back(true);
     triangleCount_ += range.indexCount / 3;
   }
   auto textureSlot = [&](int32_t index) -> uint32_t {
@@ -209,9 +211,25 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   PipelineFeatures features =
       options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
   features.softShadowSamples = std::clamp(options.softShadowSamples, 1u, 16u);
+  features.lightRoutes = features.lightRoutes && options.lightRoutes;
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
+  routeLight_ = features.lightRoutes;
+  routeMirrors_ = features.maxMirrorBounces;
+  mirrorFaces_.resize(scene.instances.size());
+  mirrorTints_.resize(scene.instances.size(), glm::vec3(0.0f));
+  for (size_t i = 0; routeLight_ && i < scene.instances.size(); ++i) {
+    const scene::MaterialDesc& material = scene.materials[scene.instances[i].material];
+    if (material.kind != scene::MaterialKind::Mirror) continue;
+    mirrorFaces_[i] = scene::flatFaces(scene.meshes[scene.instances[i].mesh]);
+    mirrorTints_[i] = material.mirrorTint;
+  }
+  lightRoutes_ = Buffer(
+      context, sizeof(gpu::LightRoutesHeader) + sizeof(gpu::GpuLightRoute) * MAX_LIGHT_ROUTES,
+      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light routes");
+  const gpu::LightRoutesHeader noRoutes{};
+  lightRoutes_.write(&noRoutes, sizeof noRoutes);
   createDescriptors();
   createPipelines(compiler, features, scene.exposureProbes);
 
@@ -248,7 +266,7 @@ void Renderer::destroyHandles() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 12> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 13> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -261,6 +279,7 @@ void Renderer::createDescriptors() {
       {BINDING_COUNTERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_PATHS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_PROBE_SETUP, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_LIGHT_ROUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
   constexpr uint32_t kSets = 2;
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
@@ -303,7 +322,7 @@ void Renderer::createDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   tlasWrite.accelerationStructureCount = 1;
   tlasWrite.pAccelerationStructures = &tlas;
-  const std::array<std::pair<uint32_t, const Buffer*>, 9> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 10> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -313,6 +332,7 @@ void Renderer::createDescriptors() {
       {BINDING_COUNTERS, &counters_},
       {BINDING_PATHS, &paths_},
       {BINDING_PROBE_SETUP, &probeSetup_},
+      {BINDING_LIGHT_ROUTES, &lightRoutes_},
   }};
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)
@@ -459,7 +479,8 @@ void Renderer::setProbes(const scene::ProbeRequest& request) {
     const scene::ExposureProbeDesc& exposure = request.exposure[i];
     if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
       throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
-    setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(), 0, 0);
+    setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(),
+                                   static_cast<uint32_t>(exposure.channel), 0);
     counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
   }
   counts.focusPixels.assign(request.focus.size(), 0);
@@ -503,10 +524,42 @@ void Renderer::moveRenderOrigin(const glm::dvec3& origin) {
   writeProbePoints();
 }
 
+// The routes of this frame's lights via the visible mirrors' faces, in render space.
+void Renderer::writeLightRoutes() {
+  if (!routeLight_) return;
+  const glm::dvec3 origin = *renderOrigin_;
+  std::vector<MirrorFace> faces;
+  for (size_t i = 0; i < mirrorFaces_.size(); ++i) {
+    if (mirrorFaces_[i].empty() || !instanceVisible_[i]) continue;
+    const glm::mat4 transform = toRenderSpace(currentTransforms_[i], origin);
+    const glm::mat3 linear(transform);
+    const glm::mat3 normalTransform = glm::transpose(glm::inverse(linear));
+    for (const scene::FlatFace& face : mirrorFaces_[i]) {
+      const glm::vec3 normal = normalTransform * face.normal;
+      if (!(glm::length(normal) > 0.0f)) continue;  // a mirror scaled flat
+      faces.push_back({glm::normalize(normal), glm::vec3(transform * glm::vec4(face.centre, 1.0f)),
+                       linear * face.halfU, linear * face.halfV, mirrorTints_[i]});
+    }
+  }
+  std::vector<gpu::GpuLightRoute> routes = findLightRoutes(faces, gpuLights_, routeMirrors_);
+  const bool same = routes.size() == routes_.size() &&
+                    std::equal(routes.begin(), routes.end(), routes_.begin(),
+                               [](const gpu::GpuLightRoute& a, const gpu::GpuLightRoute& b) {
+                                 return std::memcmp(&a, &b, sizeof a) == 0;
+                               });
+  if (same) return;
+  routes_ = std::move(routes);
+  const gpu::LightRoutesHeader header{glm::uvec4(routes_.size(), 0, 0, 0)};
+  lightRoutes_.write(&header, sizeof header);
+  if (!routes_.empty())
+    lightRoutes_.write(routes_.data(), routes_.size() * sizeof(gpu::GpuLightRoute), sizeof header);
+}
+
 void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
   if (instance >= topLevel_->instanceCount())
     throw RenderError("setInstanceVisible: no such instance");
   topLevel_->setVisible(instance, visible);
+  instanceVisible_[instance] = visible;
   tlasStale_ = true;
 }
 
@@ -693,6 +746,7 @@ FrameStats Renderer::renderFrame(const scene::FrameDesc& frame, bool readback) {
   lastIterations_ = denoiserIterations(frame);
   moveRenderOrigin(glm::dvec3(frame.camera.position));
   writeInstanceMotion();
+  writeLightRoutes();
   writeFrameUniforms(frame);
 
   vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");

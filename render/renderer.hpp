@@ -14,7 +14,9 @@
 #include "render/buffer.hpp"
 #include "render/denoiser.hpp"
 #include "render/gpu_types.hpp"
+#include "render/light_routes.hpp"
 #include "render/pipeline_variant.hpp"
+#include "scene/flat_faces.hpp"
 #include "scene/probes.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -41,6 +43,9 @@ struct RendererOptions {
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;
+  // Route light by flat mirrors onto surfaces and sensors where the scene can (false: direct
+  // light only, as the Embree reference traces it).
+  bool lightRoutes = true;
 };
 
 // GPU time of each pass from timestamp queries (0 where the device has no timestamps).
@@ -107,6 +112,9 @@ class Renderer {
                                  const glm::vec4& moments);
   bool softShadows() const { return denoiser_ != nullptr; }
 
+  // The light routes via mirrors the last frame used (empty without the LIGHT_ROUTES variant).
+  const std::vector<gpu::GpuLightRoute>& lightRoutes() const { return routes_; }
+
   // What each pixel's path reached in the last frame (rows top to bottom).
   std::vector<gpu::PixelPath> pixelPaths() const;
   const PipelineDescription& pipelineDescription() const { return pipelineDescription_; }
@@ -123,6 +131,7 @@ class Renderer {
   void writeFrameUniforms(const scene::FrameDesc& frame);
   void writeInstanceMotion();
   void writeProbePoints();
+  void writeLightRoutes();
   uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback);
 
@@ -142,6 +151,13 @@ class Renderer {
   Buffer countersReadback_;
   Buffer paths_;
   Buffer probeSetup_;
+  Buffer lightRoutes_;
+  bool routeLight_ = false;  // the variant routes light by mirrors
+  uint32_t routeMirrors_ = 0;
+  std::vector<std::vector<scene::FlatFace>> mirrorFaces_;  // per instance, object space
+  std::vector<glm::vec3> mirrorTints_;                     // per instance
+  std::vector<bool> instanceVisible_;
+  std::vector<gpu::GpuLightRoute> routes_;
   scene::ProbeRequest probeRequest_;
   scene::ProbeCounts probeCounts_;
   PipelineDescription pipelineDescription_;

@@ -21,8 +21,14 @@ struct ExposurePoint {
   bool oneSided = true;  // count the light only on the normal's side
 };
 
+// What an exposure probe counts: the luminance of what reaches the points (glass and mirror
+// tints included), or for a colour sensor how far the light (its colour times the tints) is of
+// that colour: the channel less the larger of the other two, so white light does not count.
+enum class ExposureChannel : uint32_t { Luminance = 0, Red = 1, Green = 2, Blue = 3 };
+
 struct ExposureProbeDesc {
   uint32_t light = 0;
+  ExposureChannel channel = ExposureChannel::Luminance;
   std::vector<ExposurePoint> points;  // at most EXPOSURE_SAMPLES (64)
 };
 

@@ -43,6 +43,7 @@ using uint = uint32_t;
 #define DENOISER_MAX_HISTORY 32
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
+#define BINDING_LIGHT_ROUTES 26  // lights seen via mirrors (levels with flat mirrors and lights)
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -131,12 +132,20 @@ struct FrameCounters {
 #define MAX_EXPOSURE_PROBES 16
 #define EXPOSURE_SAMPLES 64  // sample points per exposure probe (one shadow ray each)
 #define EXPOSURE_ONE 1024u   // fixed point: what one fully lit sample adds
+// What an exposure sample counts: the luminance of the transmittance (glass and mirror tints),
+// or (a colour sensor) how far the light's colour times the tints is of one colour: that
+// channel less the larger of the other two (see probe.rgen).
+#define EXPOSURE_CHANNEL_LUMINANCE 0u
+#define EXPOSURE_CHANNEL_RED 1u
+#define EXPOSURE_CHANNEL_GREEN 2u
+#define EXPOSURE_CHANNEL_BLUE 3u
 
 struct ProbeSetup {
   uvec4 counts;  // x: focus probes, y: exposure probes
   // x: instance, y: region's first pixel (x | y << 16), z: one past its last (same packing)
   uvec4 focus[MAX_FOCUS_PROBES];
-  // x: light, y: sample points used (<= EXPOSURE_SAMPLES); points at [probe * SAMPLES]
+  // x: light, y: sample points used (<= EXPOSURE_SAMPLES), z: EXPOSURE_CHANNEL_*; points at
+  // [probe * SAMPLES]
   uvec4 exposure[MAX_EXPOSURE_PROBES];
 };
 
@@ -149,6 +158,31 @@ struct ProbePoint {
 struct ProbeResults {
   uint focusPixels[MAX_FOCUS_PROBES];  // region pixels whose path ended on the probe's instance
   uint exposure[MAX_EXPOSURE_PROBES];  // sum over samples of visibility * EXPOSURE_ONE
+};
+
+// Light routed by flat mirrors: for each light and each sequence of mirror faces its light can
+// take (at most MAX_ROUTE_MIRRORS), the light's mirror image. A point lit via the route sees the
+// image; the ray towards the image must cross each face's rectangle from its reflecting side.
+#define MAX_LIGHT_ROUTES 16
+#define MAX_ROUTE_MIRRORS 3
+
+struct GpuRouteMirror {
+  vec4 plane;   // xyz: unit normal on the reflecting side, w: dot(normal, a point on the face)
+  vec4 centre;  // xyz: the face rectangle's centre
+  vec4 halfU;   // xyz: half the rectangle along one side; w: its length
+  vec4 halfV;   // xyz: half along the other side; w: its length
+};
+
+struct GpuLightRoute {
+  GpuLight image;      // the light mirrored by each face in turn; radiance times the tints
+  uvec4 lightMirrors;  // x: the light it comes from, y: faces on the route
+  vec4 tint;           // rgb: product of the faces' reflectance times tint
+  vec4 imageTangent;   // xyz: a rectangle image's first side (mirrored, so not basisAround's)
+  GpuRouteMirror mirrors[MAX_ROUTE_MIRRORS];  // from the lit point towards the light
+};
+
+struct LightRoutesHeader {
+  uvec4 count;  // x: routes in use
 };
 
 struct PixelPath {

@@ -130,6 +130,7 @@ game::ProbeReadings Simulation::renderProbeFrame() {
     const scene::LightDesc& light = level_.lights[probe.light];
     scene::ExposureProbeDesc desc;
     desc.light = probe.light;
+    desc.channel = probe.channel;
     // A hidden sensor sees nothing: it reads 0.
     if (probe.target == game::ExposureProbe::Target::Player) {
       desc.points = game::playerExposurePoints(world_.feetPosition(), light);

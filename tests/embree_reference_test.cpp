@@ -50,6 +50,7 @@ class EmbreeReferenceTest : public test::VulkanTest {
     render::RendererOptions options;
     options.width = width;
     options.height = height;
+    options.lightRoutes = false;  // the reference traces no light via mirrors
     render::Renderer renderer(context(), compiler(), scene, options);
     renderer.setProbes({{{focus.entity, box}}, {}});
     scene::FrameDesc frame;

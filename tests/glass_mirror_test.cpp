@@ -272,7 +272,8 @@ TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelin
   EXPECT_EQ(plain.defines, (render::ShaderDefines{{"HAS_GLASS", "0"},
                                                   {"HAS_MIRRORS", "0"},
                                                   {"MAX_MIRROR_BOUNCES", "0"},
-                                                  {"SOFT_SHADOWS", "0"}}));
+                                                  {"SOFT_SHADOWS", "0"},
+                                                  {"LIGHT_ROUTES", "0"}}));
 
   const render::PipelineDescription withGlass = render::describePipeline({true, false, 0});
   EXPECT_EQ(withGlass.misses,
@@ -285,12 +286,18 @@ TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelin
   EXPECT_EQ(withMirrors.defines, (render::ShaderDefines{{"HAS_GLASS", "0"},
                                                         {"HAS_MIRRORS", "1"},
                                                         {"MAX_MIRROR_BOUNCES", "4"},
-                                                        {"SOFT_SHADOWS", "0"}}));
+                                                        {"SOFT_SHADOWS", "0"},
+                                                        {"LIGHT_ROUTES", "0"}}));
   EXPECT_EQ(withMirrors.recursionDepth, 1u);
 
   const render::PipelineDescription soft = render::describePipeline({false, false, 0, true});
   EXPECT_EQ(soft.hitGroups, (std::vector<std::string>{"surface.rchit"}));
-  EXPECT_EQ(soft.defines.back(), (std::pair<std::string, std::string>{"SOFT_SHADOWS", "1"}));
+  EXPECT_EQ(soft.defines[3], (std::pair<std::string, std::string>{"SOFT_SHADOWS", "1"}));
+
+  render::PipelineFeatures routed{false, true, 4};
+  routed.lightRoutes = true;
+  EXPECT_EQ(render::describePipeline(routed).defines.back(),
+            (std::pair<std::string, std::string>{"LIGHT_ROUTES", "1"}));
   EXPECT_EQ(soft.recursionDepth, 1u);
 }
 
@@ -303,6 +310,12 @@ TEST(PipelineVariant, features_follow_the_materials_instances_use) {
   EXPECT_EQ(render::featuresOf(builder.scene), (render::PipelineFeatures{false, false, 0}));
   builder.instance(cube, builder.material(mirror()), glm::mat4(1.0f));
   EXPECT_EQ(render::featuresOf(builder.scene), (render::PipelineFeatures{false, true, 7}));
+  // With a light, a flat mirror routes light; a curved one does not.
+  scene::LightDesc lamp;
+  builder.light(lamp);
+  EXPECT_TRUE(render::featuresOf(builder.scene).lightRoutes);
+  builder.scene.instances.back().mesh = builder.mesh(game::primitives::sphere(1.0f, 16, 8));
+  EXPECT_FALSE(render::featuresOf(builder.scene).lightRoutes);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
       break;
     case Goal::Type::Lit:
       reader.checkKeys(goal, pointer,
-                       {"type", "label", "sensor", "light", "threshold", "hold_seconds"},
+                       {"type", "label", "sensor", "light", "threshold", "color", "hold_seconds"},
                        {"sensor", "light"}, what);
       result.entity =
           reader.readReference(goal["sensor"], childPointer(pointer, "sensor"), IdKind::Entity);
@@ -36,6 +36,7 @@ Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::str
           reader.readReference(goal["light"], childPointer(pointer, "light"), IdKind::Light);
       result.threshold =
           reader.readOptionalNumber(goal, "threshold", pointer, kUnitFraction, result.threshold);
+      result.channel = reader.readSensorColor(goal, pointer);
       result.holdSeconds = reader.readOptionalNumber(goal, "hold_seconds", pointer,
                                                      kNonNegativeNumber, result.holdSeconds);
       break;

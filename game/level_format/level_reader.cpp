@@ -224,6 +224,12 @@ glm::vec3 LevelReader::readOptionalColor(const OrderedJson& object, const char* 
   return object.contains(key) ? readColor(object[key], childPointer(pointer, key)) : fallback;
 }
 
+scene::ExposureChannel LevelReader::readSensorColor(const OrderedJson& object,
+                                                    const std::string& pointer) const {
+  return static_cast<scene::ExposureChannel>(
+      readOptionalChoice(object, "color", pointer, {"any", "red", "green", "blue"}, 0));
+}
+
 glm::vec2 LevelReader::readOptionalRegion(const OrderedJson& object, const std::string& pointer,
                                           const glm::vec2& fallback) const {
   if (!object.contains("region")) return fallback;

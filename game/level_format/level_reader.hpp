@@ -99,6 +99,10 @@ class LevelReader : public JsonReader {
   glm::vec3 readColor(const OrderedJson& value, const std::string& pointer) const;
   glm::vec3 readOptionalColor(const OrderedJson& object, const char* key,
                               const std::string& pointer, const glm::vec3& fallback) const;
+  // A sensor's "color": "any" (the default: luminance, whatever the light's colour) or the
+  // channel it needs, "red", "green" or "blue".
+  scene::ExposureChannel readSensorColor(const OrderedJson& object,
+                                         const std::string& pointer) const;
   // A focus region: [width, height] as fractions of the screen, at "region" or `fallback`.
   glm::vec2 readOptionalRegion(const OrderedJson& object, const std::string& pointer,
                                const glm::vec2& fallback) const;

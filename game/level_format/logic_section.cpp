@@ -80,7 +80,8 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
           reader.readOptionalNumber(json, "coverage", pointer, kUnitFraction, condition.coverage);
       break;
     case Condition::Type::Lit:
-      reader.checkKeys(json, pointer, {"type", "sensor", "light", "threshold", "hold_seconds"},
+      reader.checkKeys(json, pointer,
+                       {"type", "sensor", "light", "threshold", "color", "hold_seconds"},
                        {"sensor", "light"}, what);
       condition.entity =
           reader.readReference(json["sensor"], childPointer(pointer, "sensor"), IdKind::Entity);
@@ -88,6 +89,7 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
           reader.readReference(json["light"], childPointer(pointer, "light"), IdKind::Light);
       condition.threshold =
           reader.readOptionalNumber(json, "threshold", pointer, kUnitFraction, condition.threshold);
+      condition.channel = reader.readSensorColor(json, pointer);
       break;
     case Condition::Type::Seen:
       reader.checkKeys(json, pointer, {"type", "watcher", "threshold", "hold_seconds"}, {"watcher"},
