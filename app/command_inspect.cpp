@@ -30,6 +30,8 @@ int commandValidate(const Options& options) {
                   counted(level.entities.size(), "entity", "entities").c_str(),
                   counted(level.meshes.size(), "mesh", "meshes").c_str(),
                   counted(level.lights.size(), "light").c_str());
+      for (const std::string& warning : level.warnings)
+        std::fprintf(stderr, "warning: %s\n", warning.c_str());
     } catch (const game::LevelError& error) {
       std::fprintf(stderr, "%s\n", error.what());
       ++failures;
@@ -82,6 +84,8 @@ int commandInfo(const Options& options) {
   std::printf("  glass: %s\n", features.glass ? "yes" : "no");
   if (features.mirrors) {
     std::printf("  mirrors: yes, up to %u bounces\n", features.mirrorBounces);
+    std::printf("  light via mirrors: %s\n",
+                features.lightViaMirrors ? "yes (flat mirror faces send lights' light on)" : "no");
   } else {
     std::printf("  mirrors: no\n");
   }

@@ -165,6 +165,10 @@ void JsonReader::failInvalidJson() {
                        "invalid JSON: " + error.reason);
 }
 
+std::string JsonReader::placeOf(const std::string& pointer) const {
+  return escapeControlCharacters(placeInFile(file_, positions_.valueAt(pointer), pointer));
+}
+
 void JsonReader::failAt(SourcePosition at, const std::string& pointer,
                         const std::string& message) const {
   // One line whatever the file holds: keys, ids and paths are quoted in messages.

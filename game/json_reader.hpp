@@ -102,6 +102,9 @@ class JsonReader {
 
   // ----- messages -----
 
+  // "<file>:<line>:<column>: <pointer>: " for the value at `pointer` (warnings).
+  std::string placeOf(const std::string& pointer) const;
+
   [[noreturn]] void failAt(SourcePosition at, const std::string& pointer,
                            const std::string& message) const;
   // At the start of the value at `pointer`.

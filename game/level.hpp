@@ -122,8 +122,9 @@ struct LevelFeatures {
   size_t lights = 0;
   bool glass = false;
   bool mirrors = false;
-  uint32_t mirrorBounces = 0;  // the level's max_mirror_bounces when it has mirrors, else 0
-  bool areaLights = false;     // any light with extent (area, or a sun with a diameter)
+  uint32_t mirrorBounces = 0;    // the level's max_mirror_bounces when it has mirrors, else 0
+  bool lightViaMirrors = false;  // a flat mirror, a light and bounces: the LIGHT_ROUTES variant
+  bool areaLights = false;       // any light with extent (area, or a sun with a diameter)
   bool textures = false;
   bool movers = false;
   bool interactables = false;

@@ -1,6 +1,7 @@
 #include <algorithm>
 
 #include "game/level.hpp"
+#include "scene/flat_faces.hpp"
 
 namespace game {
 
@@ -14,10 +15,14 @@ LevelFeatures levelFeatures(const Level& level) {
     const scene::MaterialKind kind = level.materials[entity.material].kind;
     features.glass = features.glass || kind == scene::MaterialKind::Glass;
     features.mirrors = features.mirrors || kind == scene::MaterialKind::Mirror;
+    if (kind == scene::MaterialKind::Mirror && !features.lightViaMirrors)
+      features.lightViaMirrors = !scene::flatFaces(level.meshes[entity.mesh]).empty();
     features.movers = features.movers || entity.mover.has_value();
     features.interactables = features.interactables || entity.interactable.has_value();
   }
   features.mirrorBounces = features.mirrors ? std::min(level.maxMirrorBounces, 31u) : 0;
+  features.lightViaMirrors =
+      features.lightViaMirrors && !level.lights.empty() && features.mirrorBounces > 0;
   for (const scene::LightDesc& light : level.lights) {
     const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f

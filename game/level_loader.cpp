@@ -6,6 +6,7 @@
 #include "game/json_document.hpp"
 #include "game/level_format/level_reader.hpp"
 #include "game/level_format/sections.hpp"
+#include "scene/flat_faces.hpp"
 
 namespace game {
 
@@ -84,6 +85,13 @@ Level readLevel(LevelReader& reader, const std::string& text) {
       root["entities"], "/entities",
       [&](const std::string& id, const OrderedJson& value, const std::string& pointer) {
         level.entities.push_back(readEntity(reader, id, value, pointer, level));
+        const Entity& entity = level.entities.back();
+        if (level.materials[entity.material].kind == scene::MaterialKind::Mirror &&
+            scene::flatFaces(level.meshes[entity.mesh]).empty())
+          level.warnings.push_back(
+              reader.placeOf(pointer) +
+              "a mirror on a curved mesh shows the reflected view but sends "
+              "no light on (only flat mirror faces light surfaces and sensors)");
       });
   if (root.contains("goal")) level.goal = readGoal(reader, root["goal"], "/goal", 1);
   if (root.contains("lose")) level.lose = readLoseConditions(reader, root["lose"], "/lose");

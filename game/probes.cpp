@@ -5,8 +5,13 @@ namespace game {
 namespace {
 
 // Depth first, parents before children, so probe indices follow the goal tree's file order.
-std::string litLabel(const Level& level, uint32_t sensor, uint32_t light) {
-  return quotedEntityId(level, sensor) + " lit by " + quotedLightId(level, light);
+std::string litLabel(const Level& level, uint32_t sensor, uint32_t light,
+                     scene::ExposureChannel channel) {
+  const char* colour = channel == scene::ExposureChannel::Red     ? " red"
+                       : channel == scene::ExposureChannel::Green ? " green"
+                       : channel == scene::ExposureChannel::Blue  ? " blue"
+                                                                  : "";
+  return quotedEntityId(level, sensor) + " lit" + colour + " by " + quotedLightId(level, light);
 }
 
 std::string seenLabel(const Level& level, uint32_t watcher) {
@@ -21,7 +26,7 @@ void addGoalProbes(const Level& level, const Goal& goal, ProbeLayout& layout) {
     case Goal::Type::Lit:
       layout.exposure.push_back(
           {ExposureProbe::Target::Entity, goal.entity, goal.light,
-           goal.label.empty() ? litLabel(level, goal.entity, goal.light) : goal.label,
+           goal.label.empty() ? litLabel(level, goal.entity, goal.light, goal.channel) : goal.label,
            goal.threshold, goal.channel});
       break;
     case Goal::Type::Reach:
@@ -40,9 +45,10 @@ void addConditionProbes(const Level& level, const Condition& condition, ProbeLay
       layout.focus.push_back({condition.entity, condition.region});
       break;
     case Condition::Type::Lit:
-      layout.exposure.push_back({ExposureProbe::Target::Entity, condition.entity, condition.light,
-                                 litLabel(level, condition.entity, condition.light),
-                                 condition.threshold, condition.channel});
+      layout.exposure.push_back(
+          {ExposureProbe::Target::Entity, condition.entity, condition.light,
+           litLabel(level, condition.entity, condition.light, condition.channel),
+           condition.threshold, condition.channel});
       break;
     case Condition::Type::Seen:
       layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light,

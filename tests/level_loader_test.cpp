@@ -545,6 +545,27 @@ TEST(LevelLoader, features_of_a_plain_level_are_off) {
   EXPECT_EQ(game::buildSceneDesc(level).maxMirrorBounces, 4u);
 }
 
+TEST(LevelLoader, a_flat_mirror_routes_light_and_a_curved_one_warns) {
+  std::string text = replaced(kMinimalLevel, R"("grey": {"color": [0.5, 0.5, 0.5]})",
+                              R"("grey": {"mirror": {"reflectance": 0.9}})");
+  text =
+      replaced(text, R"("lights": {})",
+               R"("lights": {"lamp": {"type": "point", "position": [0, 3, 0], "intensity": 5}})");
+  const game::Level flat = game::parseLevel(text, "levels/test.json");
+  EXPECT_TRUE(game::levelFeatures(flat).lightViaMirrors);
+  EXPECT_TRUE(flat.warnings.empty());
+
+  const std::string curvedText =
+      replaced(text, R"({"box": {"size": [1, 1, 1]}})", R"({"sphere": {"radius": 1}})");
+  const game::Level curved = game::parseLevel(curvedText, "levels/test.json");
+  EXPECT_FALSE(game::levelFeatures(curved).lightViaMirrors);
+  EXPECT_EQ(curved.warnings,
+            (std::vector<std::string>{
+                "levels/test.json:7:25: /entities/crate: a mirror on a curved mesh shows the "
+                "reflected view but sends no light on (only flat mirror faces light surfaces and "
+                "sensors)"}));
+}
+
 TEST(LevelLoader, shipped_levels_load) {
   for (const char* name :
        {"01_first_light.json", "02_penumbra.json", "03_glass_and_mirrors.json"}) {
