@@ -97,6 +97,8 @@ struct Level {
   std::vector<Entity> entities;
   std::vector<std::string> lightIds;  // parallel to lights
   std::vector<scene::LightDesc> lights;
+  // Parallel to lights: the entity a light rides on ("rides"), moving and turning with it.
+  std::vector<std::optional<uint32_t>> lightCarriers;
   std::optional<Goal> goal;
   std::vector<LoseCondition> lose;
   std::vector<Rule> rules;  // the "logic" section, in file order

@@ -78,7 +78,8 @@ Level readLevel(LevelReader& reader, const std::string& text) {
         root["lights"], "/lights",
         [&](const std::string& id, const OrderedJson& value, const std::string& pointer) {
           level.lightIds.push_back(id);
-          level.lights.push_back(readLight(reader, value, pointer));
+          level.lightCarriers.emplace_back();
+          level.lights.push_back(readLight(reader, value, pointer, level.lightCarriers.back()));
         });
   }
   reader.forEachEntry(

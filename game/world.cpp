@@ -12,6 +12,7 @@ namespace game {
 World::World(const Level& level, const PlayerSettings& player)
     : entities_(level.entities),
       lights_(level.lights),
+      lightCarriers_(level.lightCarriers),
       verticalFovDegrees_(level.camera.verticalFovDegrees),
       collision_(level),
       player_(level.camera, player),
@@ -194,7 +195,17 @@ void World::respawnPlayer(const glm::vec3& feet, float yawDegrees) {
 
 std::vector<scene::LightDesc> World::lights() const {
   std::vector<scene::LightDesc> lights = lights_;
-  for (size_t i = 0; i < lights.size(); ++i) lights[i].enabled = lightsEnabled_[i] != 0;
+  for (size_t i = 0; i < lights.size(); ++i) {
+    lights[i].enabled = lightsEnabled_[i] != 0;
+    if (i >= lightCarriers_.size() || !lightCarriers_[i]) continue;
+    // Where the carrier is now, relative to where the level put it.
+    const uint32_t carrier = *lightCarriers_[i];
+    const glm::mat4 moved =
+        entityTransform(carrier) * glm::inverse(game::entityTransform(entities_[carrier]));
+    lights[i].position = glm::vec3(moved * glm::vec4(lights[i].position, 1.0f));
+    const glm::vec3 direction = glm::mat3(moved) * lights[i].direction;
+    if (glm::length(direction) > 0.0f) lights[i].direction = glm::normalize(direction);
+  }
   return lights;
 }
 

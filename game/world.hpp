@@ -43,7 +43,8 @@ class World {
   bool lightEnabled(uint32_t light) const { return lightsEnabled_[light] != 0; }
   // A switch interactable is on when the light it switches is.
   bool switchOn(uint32_t entity) const;
-  // The level's lights with their current enabled states.
+  // The level's lights with their current enabled states and poses (a light that rides an
+  // entity moves and turns with it).
   std::vector<scene::LightDesc> lights() const;
 
   const PlayerController& player() const { return player_; }
@@ -96,6 +97,7 @@ class World {
 
   std::vector<Entity> entities_;
   std::vector<scene::LightDesc> lights_;
+  std::vector<std::optional<uint32_t>> lightCarriers_;  // per light
   float verticalFovDegrees_ = 60.0f;
   CollisionWorld collision_;
   PlayerController player_;

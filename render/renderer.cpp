@@ -579,6 +579,18 @@ void Renderer::setLightTint(uint32_t light, const glm::vec3& tint) {
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
+void Renderer::setLightPose(uint32_t light, const glm::vec3& position, const glm::vec3& direction) {
+  if (light >= gpuLights_.size()) throw RenderError("setLightPose: no such light");
+  lightPositions_[light] = position;
+  const glm::vec3 origin = renderOrigin_ ? toRenderSpace(position, *renderOrigin_) : position;
+  gpuLights_[light].positionType = glm::vec4(origin, gpuLights_[light].positionType.w);
+  if (glm::length(direction) > 0.0f) {
+    gpuLights_[light].directionEnabled =
+        glm::vec4(glm::normalize(direction), gpuLights_[light].directionEnabled.w);
+  }
+  lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
+}
+
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   if (light >= gpuLights_.size()) throw RenderError("setLightEnabled: no such light");
   gpuLights_[light].directionEnabled.w = enabled ? 1.0f : 0.0f;

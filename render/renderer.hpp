@@ -91,6 +91,9 @@ class Renderer {
   void setInstanceVisible(uint32_t instance, bool visible);
   // Extra emitted light, `glow` times the surface's albedo (0: none), for feedback in the world.
   void setInstanceGlow(uint32_t instance, float glow);
+  // Moves a light (one that rides a moving entity): world position and, for directional,
+  // rectangle and disk lights, direction.
+  void setLightPose(uint32_t light, const glm::vec3& position, const glm::vec3& direction);
   // The light's colour times `tint` (white: as the level made it).
   void setLightTint(uint32_t light, const glm::vec3& tint);
 

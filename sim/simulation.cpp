@@ -45,6 +45,7 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
             : std::vector<game::SurfaceSample>{});
   }
   for (const scene::LightDesc& light : level.lights) lightStates_.push_back(light.enabled);
+  lightPoses_ = level.lights;
   visibleStates_.assign(level.entities.size(), true);
   glows_.assign(level.entities.size(), 0.0f);
   warmths_.assign(level.lights.size(), 0.0f);
@@ -70,6 +71,19 @@ void Simulation::syncRenderer() {
     for (size_t i = 0; i < level_.entities.size(); ++i)
       transforms.push_back(world_.entityTransform(uint32_t(i)));
     renderer_->setInstanceTransforms(transforms);
+  }
+  // Lights that ride entities follow them.
+  const bool lightsRide = std::any_of(level_.lightCarriers.begin(), level_.lightCarriers.end(),
+                                      [](const auto& carrier) { return carrier.has_value(); });
+  if (lightsRide) {
+    const std::vector<scene::LightDesc> lights = world_.lights();
+    for (uint32_t light = 0; light < lights.size(); ++light) {
+      scene::LightDesc& sent = lightPoses_[light];
+      if (lights[light].position == sent.position && lights[light].direction == sent.direction)
+        continue;
+      sent = lights[light];
+      renderer_->setLightPose(light, sent.position, sent.direction);
+    }
   }
   for (uint32_t light = 0; light < lightStates_.size(); ++light) {
     const bool enabled = world_.lightEnabled(light);
@@ -123,11 +137,12 @@ void Simulation::syncFeedback() {
 
 game::ProbeReadings Simulation::renderProbeFrame() {
   scene::ProbeRequest request;
+  const std::vector<scene::LightDesc> lights = world_.lights();  // where they are now
   for (const game::FocusProbe& focus : layout_.focus)
     request.focus.push_back({focus.entity, focus.region});
   for (size_t i = 0; i < layout_.exposure.size(); ++i) {
     const game::ExposureProbe& probe = layout_.exposure[i];
-    const scene::LightDesc& light = level_.lights[probe.light];
+    const scene::LightDesc& light = lights[probe.light];
     scene::ExposureProbeDesc desc;
     desc.light = probe.light;
     desc.channel = probe.channel;

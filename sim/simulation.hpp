@@ -77,9 +77,10 @@ class Simulation {
   std::unique_ptr<render::Renderer> renderer_;
   std::vector<std::vector<game::SurfaceSample>> sensorSamples_;  // per exposure probe
   std::vector<bool> lightStates_;
-  std::vector<bool> visibleStates_;         // per entity, as the renderer last got them
-  std::vector<float> glows_;                // per entity, as the renderer last got them
-  std::vector<float> warmths_;              // per light, as the renderer last got them
+  std::vector<bool> visibleStates_;           // per entity, as the renderer last got them
+  std::vector<float> glows_;                  // per entity, as the renderer last got them
+  std::vector<float> warmths_;                // per light, as the renderer last got them
+  std::vector<scene::LightDesc> lightPoses_;  // per light, as the renderer last got them
   bool transformsChanged_ = false;          // since the renderer last got the entities' transforms
   std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
   std::deque<game::ProbeReadings> inFlight_;

@@ -2,6 +2,11 @@
 // the rules exactly L probe frames later, identical from run to run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
 #include "game/level_loader.hpp"
 #include "sim/simulation.hpp"
 #include "vulkan_fixture.hpp"
@@ -129,4 +134,66 @@ TEST_F(SimulationTest, an_orb_glows_as_its_focus_score_rises) {
   const int during = centreGreen();
   EXPECT_GT(during, before + 40) << "before " << before << ", at half the score " << during;
   EXPECT_EQ(simulation.latestReadings()->focusCoverage[0], 1.0f);  // the glow counts for nothing
+}
+
+namespace {
+
+// A lamp 3 m up over a plate, half shaded by a slab 1 m up; the lamp rides a bulb that crosses
+// from x = -3 to 3 in one second (or stands where the bulb is at `tick`).
+std::string sweepingLampLevel(std::optional<int> standingAtTick) {
+  const bool moving = !standingAtTick;
+  const float x = moving ? -3.0f : -3.0f + 6.0f * float(std::min(*standingAtTick, 60)) / 60.0f;
+  const std::string position = "[" + std::to_string(x) + ", 3, 0]";
+  const std::string mover =
+      moving ? R"(, "mover": { "duration_seconds": 1, "repeat": "once", "easing": "linear",
+                              "keyframes": [ { "position": [-3, 3, 0] }, { "position": [3, 3, 0] } ] })"
+             : "";
+  return R"({
+    "format": 1, "name": "Sweep",
+    "camera": { "position": [0, 1.65, 8] },
+    "materials": { "paint": {} },
+    "meshes": { "floor": { "box": { "size": [40, 1, 40] } }, "plate": { "box": { "size": [2, 0.05, 2] } },
+                "slab": { "box": { "size": [1, 0.1, 3] } }, "bulb": { "sphere": { "radius": 0.1 } } },
+    "entities": {
+      "floor": { "mesh": "floor", "material": "paint", "position": [0, -0.5, 0] },
+      "plate": { "mesh": "plate", "material": "paint", "position": [0, 0.025, 0] },
+      "slab": { "mesh": "slab", "material": "paint", "position": [0, 1, 0] },
+      "bulb": { "mesh": "bulb", "material": "paint", "position": )" +
+         position + R"(, "casts_shadow": false)" + mover + R"( } },
+    "lights": { "lamp": { "type": "point", "position": )" +
+         position + R"(, "intensity": 5, "rides": "bulb" } },
+    "goal": { "type": "lit", "sensor": "plate", "light": "lamp", "threshold": 1 }
+  })";
+}
+
+}  // namespace
+
+// A light that rides a mover is where the mover is on every tick: with a probe frame after
+// each tick, the reading each frame adds to the filter over probe frames is what the lamp
+// standing at that tick's place reads, and the readings change as the shadow sweeps.
+TEST_F(SimulationTest, probe_values_follow_a_moving_light_tick_for_tick) {
+  auto fixed = [](float reading) { return int64_t(std::llround(double(reading) * 65536.0)); };
+  const game::Level moving = game::parseLevel(sweepingLampLevel(std::nullopt), "sweep.json");
+  sim::Simulation simulation(context(), compiler(), moving, {32, 18, 1, 0});
+  std::vector<int64_t> filtered;  // 16.16, as the simulation keeps it
+  for (int tick = 0; tick <= 60; ++tick) {
+    if (tick > 0) simulation.step({});
+    ASSERT_EQ(simulation.latestReadings()->tick, uint64_t(tick));
+    filtered.push_back(fixed(simulation.latestReadings()->exposure[0]));
+    if (tick % 6 != 0) continue;  // every tenth of a second against a standing lamp
+    const game::Level standing = game::parseLevel(sweepingLampLevel(tick), "sweep.json");
+    sim::Simulation still(context(), compiler(), standing, {32, 18, 1, 0});
+    const int64_t raw = fixed(still.latestReadings()->exposure[0]);  // the first: unfiltered
+    if (tick == 0) {
+      EXPECT_EQ(filtered[0], raw);
+      continue;
+    }
+    // filtered = floor((previous + raw) / 2): the raw reading this frame added.
+    const int64_t added = 2 * filtered[size_t(tick)] - filtered[size_t(tick) - 1];
+    EXPECT_TRUE(raw == added || raw == added + 1) << "tick " << tick << ": the standing lamp reads "
+                                                  << raw << ", the moving one added " << added;
+  }
+  // The shadow sweeps across the plate: most of it is shaded with the lamp overhead.
+  const auto [least, most] = std::minmax_element(filtered.begin(), filtered.end());
+  EXPECT_GT(*most - *least, 65536 / 10);
 }

@@ -178,6 +178,25 @@ TEST_F(SoftShadowTest, disoccluded_pixels_restart_their_history) {
   EXPECT_NEAR(moments[0].z, 11.0f, 1e-3);  // the floor that was visible keeps its history
 }
 
+// The longest run of pixels along a row that are fully lit in `reference` but still dark in
+// `denoised`, from the nearest pixel really in (pen)umbra.
+int longestShadowTrail(const std::vector<float>& denoised, const std::vector<float>& reference) {
+  int longestTrail = 0;
+  for (uint32_t y = 0; y < kSize; ++y) {
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const size_t i = size_t(y) * kSize + x;
+      if (reference[i] < 0.95f || denoised[i] > 0.8f) continue;
+      int distance = int(kSize);
+      for (uint32_t other = 0; other < kSize; ++other) {
+        if (reference[size_t(y) * kSize + other] < 0.95f)
+          distance = std::min(distance, std::abs(int(other) - int(x)));
+      }
+      longestTrail = std::max(longestTrail, distance);
+    }
+  }
+  return longestTrail;
+}
+
 TEST_F(SoftShadowTest, moving_occluder_leaves_a_trail_of_at_most_2_pixels_after_16_frames) {
   // The slab slides 10 cm a frame (about 2 px of shadow) for 16 frames.
   const auto slabAt = [](uint32_t frame) {
@@ -192,21 +211,29 @@ TEST_F(SoftShadowTest, moving_occluder_leaves_a_trail_of_at_most_2_pixels_after_
   }
   const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
   const auto reference = accumulate(slabScene(sphereLight(0.4f), slabAt(frames - 1)), 256, 50000);
-  // Trail: pixels that are fully lit now but still dark, measured along the motion (rows) from
-  // the nearest pixel that is really in (pen)umbra.
-  int longestTrail = 0;
-  for (uint32_t y = 0; y < kSize; ++y) {
-    for (uint32_t x = 0; x < kSize; ++x) {
-      const size_t i = size_t(y) * kSize + x;
-      if (reference[i] < 0.95f || denoised[i] > 0.8f) continue;
-      int distance = int(kSize);
-      for (uint32_t other = 0; other < kSize; ++other) {
-        if (reference[size_t(y) * kSize + other] < 0.95f)
-          distance = std::min(distance, std::abs(int(other) - int(x)));
-      }
-      longestTrail = std::max(longestTrail, distance);
-    }
+  // Trail: pixels that are fully lit now but still dark, measured along the motion (rows).
+  const int longestTrail = longestShadowTrail(denoised, reference);
+  std::printf("longest trail: %d px\n", longestTrail);
+  EXPECT_LE(longestTrail, 2);
+}
+
+TEST_F(SoftShadowTest, moving_light_leaves_a_trail_of_at_most_2_pixels_after_16_frames) {
+  // The light slides 30 cm a frame; the slab's shadow (1.5 m below it, 0.5 m above the floor)
+  // moves 10 cm, about 2 px, the other way, as in the moving-occluder test.
+  const auto lightAt = [](uint32_t frame) {
+    scene::LightDesc light = sphereLight(0.4f);
+    light.position = glm::vec3(-2.4f + 0.3f * float(frame), 2.0f, 0.0f);
+    return light;
+  };
+  auto renderer = makeRenderer(slabScene(lightAt(0)));
+  const uint32_t frames = 16;
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    renderer->setLightPose(0, lightAt(frame).position, lightAt(frame).direction);
+    renderer->renderFrame(frameAt(frame));
   }
+  const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+  const auto reference = accumulate(slabScene(lightAt(frames - 1)), 256, 50000);
+  const int longestTrail = longestShadowTrail(denoised, reference);
   std::printf("longest trail: %d px\n", longestTrail);
   EXPECT_LE(longestTrail, 2);
 }

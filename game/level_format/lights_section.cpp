@@ -4,7 +4,7 @@
 namespace game::level_format {
 
 scene::LightDesc readLight(const LevelReader& reader, const OrderedJson& light,
-                           const std::string& pointer) {
+                           const std::string& pointer, std::optional<uint32_t>& carrier) {
   static const std::vector<std::string> kTypes{"point", "directional", "sphere", "rectangle",
                                                "disk"};
   const std::size_t type = reader.readType(light, pointer, kTypes);
@@ -12,38 +12,41 @@ scene::LightDesc readLight(const LevelReader& reader, const OrderedJson& light,
   scene::LightDesc desc;
   switch (type) {
     case 0:
-      reader.checkKeys(light, pointer, {"type", "position", "color", "intensity", "enabled"},
+      reader.checkKeys(light, pointer,
+                       {"type", "position", "color", "intensity", "enabled", "rides"},
                        {"position", "intensity"}, what);
       desc.type = scene::LightType::Point;
       break;
     case 1:
-      reader.checkKeys(
-          light, pointer,
-          {"type", "direction", "angular_diameter_degrees", "color", "intensity", "enabled"},
-          {"direction", "intensity"}, what);
+      reader.checkKeys(light, pointer,
+                       {"type", "direction", "angular_diameter_degrees", "color", "intensity",
+                        "enabled", "rides"},
+                       {"direction", "intensity"}, what);
       desc.type = scene::LightType::Directional;
       desc.angularDiameterRadians = glm::radians(reader.readOptionalNumber(
           light, "angular_diameter_degrees", pointer, NumberRule{0.0, true, 30.0, true}, 0.0f));
       break;
     case 2:
       reader.checkKeys(light, pointer,
-                       {"type", "position", "radius", "color", "intensity", "enabled"},
+                       {"type", "position", "radius", "color", "intensity", "enabled", "rides"},
                        {"position", "radius", "intensity"}, what);
       desc.type = scene::LightType::Sphere;
       desc.radius = reader.readNumber(light["radius"], childPointer(pointer, "radius"), kLength);
       break;
     case 3:
-      reader.checkKeys(light, pointer,
-                       {"type", "position", "direction", "size", "color", "intensity", "enabled"},
-                       {"position", "direction", "size", "intensity"}, what);
+      reader.checkKeys(
+          light, pointer,
+          {"type", "position", "direction", "size", "color", "intensity", "enabled", "rides"},
+          {"position", "direction", "size", "intensity"}, what);
       desc.type = scene::LightType::Rectangle;
       desc.size = reader.readVec2(light["size"], childPointer(pointer, "size"), kLength,
                                   "an array of 2 numbers [width, height]");
       break;
     default:
-      reader.checkKeys(light, pointer,
-                       {"type", "position", "direction", "radius", "color", "intensity", "enabled"},
-                       {"position", "direction", "radius", "intensity"}, what);
+      reader.checkKeys(
+          light, pointer,
+          {"type", "position", "direction", "radius", "color", "intensity", "enabled", "rides"},
+          {"position", "direction", "radius", "intensity"}, what);
       desc.type = scene::LightType::Disk;
       desc.radius = reader.readNumber(light["radius"], childPointer(pointer, "radius"), kLength);
       break;
@@ -59,6 +62,9 @@ scene::LightDesc readLight(const LevelReader& reader, const OrderedJson& light,
   desc.intensity =
       reader.readNumber(light["intensity"], childPointer(pointer, "intensity"), kIntensity);
   desc.enabled = reader.readOptionalBool(light, "enabled", pointer, true);
+  carrier.reset();
+  if (light.contains("rides"))
+    carrier = reader.readReference(light["rides"], childPointer(pointer, "rides"), IdKind::Entity);
   return desc;
 }
 

@@ -22,8 +22,9 @@ scene::MaterialDesc readMaterial(LevelReader& reader, const OrderedJson& materia
                                  const std::string& pointer, Level& level);
 scene::MeshData readMesh(LevelReader& reader, const OrderedJson& mesh, const std::string& pointer,
                          Level& level);
+// A light and the entity it rides on, if any.
 scene::LightDesc readLight(const LevelReader& reader, const OrderedJson& light,
-                           const std::string& pointer);
+                           const std::string& pointer, std::optional<uint32_t>& carrier);
 Entity readEntity(LevelReader& reader, const std::string& id, const OrderedJson& entity,
                   const std::string& pointer, Level& level);
 Goal readGoal(const LevelReader& reader, const OrderedJson& goal, const std::string& pointer,
