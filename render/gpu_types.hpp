@@ -26,7 +26,8 @@ static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBE
 namespace render::gpu {
 // An instance's TLAS visibility mask: glass is seen only by glass rays, everything else by
 // surface rays; shadow casters also by the matching shadow rays.
-inline constexpr uint32_t instanceMask(bool glass, bool castsShadow) {
+inline constexpr uint32_t instanceMask(bool glass, bool castsShadow, bool playerBody = false) {
+  if (playerBody) return MASK_BODY;
   return glass ? MASK_GLASS | (castsShadow ? MASK_GLASS_SHADOW : 0u)
                : MASK_VISIBLE | (castsShadow ? MASK_SHADOW_CASTER : 0u);
 }

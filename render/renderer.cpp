@@ -189,7 +189,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     const scene::InstanceDesc& instance = scene.instances[i];
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
-    tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow);
+    tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody);
     if (glass) {
       // Non-opaque, so the glass any-hit shader runs; only glass rays see it.
       tlasInstance.hitGroup = HIT_GROUP_GLASS;
@@ -479,8 +479,9 @@ void Renderer::setProbes(const scene::ProbeRequest& request) {
     const scene::ExposureProbeDesc& exposure = request.exposure[i];
     if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
       throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
-    setup.exposure[i] = glm::uvec4(exposure.light, exposure.points.size(),
-                                   static_cast<uint32_t>(exposure.channel), 0);
+    setup.exposure[i] =
+        glm::uvec4(exposure.light, exposure.points.size(), static_cast<uint32_t>(exposure.channel),
+                   exposure.onPlayerBody ? 1u : 0u);
     counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
   }
   counts.focusPixels.assign(request.focus.size(), 0);

@@ -29,6 +29,7 @@ enum class ExposureChannel : uint32_t { Luminance = 0, Red = 1, Green = 2, Blue 
 struct ExposureProbeDesc {
   uint32_t light = 0;
   ExposureChannel channel = ExposureChannel::Luminance;
+  bool onPlayerBody = false;          // the points are on the player's body, whose rays skip it
   std::vector<ExposurePoint> points;  // at most EXPOSURE_SAMPLES (64)
 };
 

@@ -53,6 +53,9 @@ struct InstanceDesc {
   uint32_t material = 0;
   glm::mat4 objectToWorld{1.0f};
   bool castsShadow = true;
+  // The player's figure: casts shadows and shows in mirrors, but camera rays from the eye and
+  // the player's own exposure probes pass through it.
+  bool playerBody = false;
 };
 
 enum class LightType : uint32_t {

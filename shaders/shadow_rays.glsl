@@ -6,6 +6,9 @@ layout(location = PAYLOAD_GLASS) rayPayloadEXT GlassPath glass;
 #endif
 
 uint raysTraced = 0u;
+// What blocks shadow rays: opaque casters and the player's body (not for the player's own
+// exposure probes, whose points are on it).
+uint shadowCasterMask = MASK_SHADOW_CASTER | MASK_BODY;
 
 // Transmittance of the glass between origin and origin + direction * tMax.
 vec3 glassTransmittance(vec3 origin, vec3 direction, float tMax, uint mask) {
@@ -28,7 +31,7 @@ vec3 shadowTransmittance(vec3 origin, vec3 toLight, float distanceToLight) {
   traceRayEXT(sceneTlas,
               gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT |
                   gl_RayFlagsSkipClosestHitShaderEXT,
-              MASK_SHADOW_CASTER, 0, 1, MISS_SHADOW, origin, 0.0, toLight, distanceToLight,
+              shadowCasterMask, 0, 1, MISS_SHADOW, origin, 0.0, toLight, distanceToLight,
               PAYLOAD_SHADOW);
   ++raysTraced;
   if (visibility == 0.0) return vec3(0.0);

@@ -61,6 +61,9 @@ using uint = uint32_t;
 #define MASK_SHADOW_CASTER 0x02u
 #define MASK_GLASS 0x04u
 #define MASK_GLASS_SHADOW 0x08u
+// The player's body: seen by shadow rays and by rays that left a mirror, not by camera rays from
+// the eye, nor by the probe rays that measure the player's own exposure.
+#define MASK_BODY 0x10u
 
 // Hit groups (the instance's SBT record offset).
 #define HIT_GROUP_SURFACE 0u
@@ -144,7 +147,8 @@ struct ProbeSetup {
   uvec4 counts;  // x: focus probes, y: exposure probes
   // x: instance, y: region's first pixel (x | y << 16), z: one past its last (same packing)
   uvec4 focus[MAX_FOCUS_PROBES];
-  // x: light, y: sample points used (<= EXPOSURE_SAMPLES), z: EXPOSURE_CHANNEL_*; points at
+  // x: light, y: sample points used (<= EXPOSURE_SAMPLES), z: EXPOSURE_CHANNEL_*, w: 1 when the
+  // points are on the player's body (its rays pass through the body); points at
   // [probe * SAMPLES]
   uvec4 exposure[MAX_EXPOSURE_PROBES];
 };

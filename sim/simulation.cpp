@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "game/player_body.hpp"
 #include "render/context.hpp"
 #include "render/shader_compiler.hpp"
 
@@ -20,9 +21,17 @@ render::RendererOptions rendererOptions(const SimulationOptions& options) {
   return result;
 }
 
+// The level's scene and, after its entities' instances, the player's body.
 scene::SceneDesc sceneFor(const game::Level& level, const game::ProbeLayout& layout) {
   scene::SceneDesc scene = game::buildSceneDesc(level);
   scene.exposureProbes = !layout.exposure.empty();
+  scene::InstanceDesc body;
+  body.mesh = uint32_t(scene.meshes.size());
+  body.material = uint32_t(scene.materials.size());
+  body.playerBody = true;
+  scene.meshes.push_back(game::playerBodyMesh());
+  scene.materials.push_back(game::playerBodyMaterial());
+  scene.instances.push_back(body);
   return scene;
 }
 
@@ -50,7 +59,8 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
   glows_.assign(level.entities.size(), 0.0f);
   warmths_.assign(level.lights.size(), 0.0f);
   if (options_.verticalFovDegrees) world_.setVerticalFovDegrees(*options_.verticalFovDegrees);
-  transformsChanged_ = !world_.changedEntities().empty();
+  transformsChanged_ = true;  // the player's body goes to the spawn point
+  bodyFeet_ = world_.feetPosition();
   // Probe frame 0 shows the world before the first tick.
   syncRenderer();
   inFlight_.push_back(renderProbeFrame());
@@ -70,6 +80,7 @@ void Simulation::syncRenderer() {
     std::vector<glm::mat4> transforms;
     for (size_t i = 0; i < level_.entities.size(); ++i)
       transforms.push_back(world_.entityTransform(uint32_t(i)));
+    transforms.push_back(game::playerBodyTransform(world_.feetPosition()));
     renderer_->setInstanceTransforms(transforms);
   }
   // Lights that ride entities follow them.
@@ -146,6 +157,7 @@ game::ProbeReadings Simulation::renderProbeFrame() {
     scene::ExposureProbeDesc desc;
     desc.light = probe.light;
     desc.channel = probe.channel;
+    desc.onPlayerBody = probe.target == game::ExposureProbe::Target::Player;
     // A hidden sensor sees nothing: it reads 0.
     if (probe.target == game::ExposureProbe::Target::Player) {
       desc.points = game::playerExposurePoints(world_.feetPosition(), light);
@@ -183,7 +195,9 @@ game::ProbeReadings Simulation::renderProbeFrame() {
 void Simulation::step(const game::TickInput& input) {
   world_.step(input);
   // Changes between probe frames count too: the next frame shows where everything is now.
-  transformsChanged_ = transformsChanged_ || !world_.changedEntities().empty();
+  transformsChanged_ =
+      transformsChanged_ || !world_.changedEntities().empty() || world_.feetPosition() != bodyFeet_;
+  bodyFeet_ = world_.feetPosition();
   const uint64_t now = world_.tick();
   const uint64_t k = options_.probeEveryTicks;
   if (now % k == 0) {

@@ -81,6 +81,7 @@ class Simulation {
   std::vector<float> glows_;                  // per entity, as the renderer last got them
   std::vector<float> warmths_;                // per light, as the renderer last got them
   std::vector<scene::LightDesc> lightPoses_;  // per light, as the renderer last got them
+  glm::vec3 bodyFeet_{0.0f};                  // where the renderer last got the player's body
   bool transformsChanged_ = false;          // since the renderer last got the entities' transforms
   std::vector<uint64_t> exposureFiltered_;  // 16.16 fixed point, per exposure probe
   std::deque<game::ProbeReadings> inFlight_;

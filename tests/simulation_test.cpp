@@ -197,3 +197,83 @@ TEST_F(SimulationTest, probe_values_follow_a_moving_light_tick_for_tick) {
   const auto [least, most] = std::minmax_element(filtered.begin(), filtered.end());
   EXPECT_GT(*most - *least, 65536 / 10);
 }
+
+namespace {
+
+// A low lamp, a board behind the player (the lamp, the player and the board on a line when the
+// player stands at the origin), and a stealth rule that only reads the player's exposure.
+game::Level bodyLevel(const std::string& camera) {
+  return game::parseLevel(R"({
+    "format": 1, "name": "Body",
+    "camera": )" + camera + R"(,
+    "materials": { "paint": {} },
+    "meshes": { "floor": { "box": { "size": [40, 1, 40] } }, "board": { "box": { "size": [1.2, 1.6, 0.05] } } },
+    "entities": {
+      "floor": { "mesh": "floor", "material": "paint", "position": [0, -0.5, 0] },
+      "board": { "mesh": "board", "material": "paint", "position": [0, 0.9, 2.5] }
+    },
+    "lights": { "lamp": { "type": "point", "position": [0, 1, -4], "intensity": 40 } },
+    "goal": { "type": "lit", "sensor": "board", "light": "lamp" },
+    "lose": [ { "type": "stealth", "watcher": "lamp", "exposure_limit": 1, "seconds": 100 } ]
+  })",
+                          "body.json");
+}
+
+}  // namespace
+
+// The player's body casts the shadow the rules measure: standing between the lamp and the board
+// it shades the board's probe and the board on screen alike (a 33 x 19 picture: the board's
+// row through its centre spans columns 13 to 19, the body's shadow 14 to 18), while the player's
+// own exposure (sample points on the body) is not shaded by the body itself.
+TEST_F(SimulationTest, the_player_body_shades_the_board_on_screen_and_in_its_probe) {
+  struct Seen {
+    float board, player;
+    int centre, edge;  // green bytes on screen: the board's centre, and its left edge
+  };
+  auto look = [&](const std::string& camera) {
+    const game::Level level = bodyLevel(camera);
+    sim::Simulation simulation(context(), compiler(), level, {33, 19, 1, 0});
+    const std::vector<uint8_t>& pixels = simulation.renderPicture();
+    return Seen{simulation.latestReadings()->exposure[0], simulation.latestReadings()->exposure[1],
+                pixels[(9 * 33 + 16) * 4 + 1], pixels[(9 * 33 + 13) * 4 + 1]};
+  };
+  // Both cameras look at the board's centre (0, 0.9, 2.5).
+  const Seen between =
+      look(R"({ "position": [0, 1.65, 0], "yaw_degrees": 180, "pitch_degrees": -16.7 })");
+  const Seen aside =
+      look(R"({ "position": [3, 1.65, 0], "yaw_degrees": 129.8, "pitch_degrees": -10.9 })");
+  EXPECT_EQ(aside.board, 1.0f);
+  EXPECT_LT(between.board, 0.8f);  // the body's shadow covers part of the board
+  EXPECT_GT(between.board, 0.2f);
+  EXPECT_EQ(between.player, 1.0f);  // its own probe rays pass through the body
+  EXPECT_EQ(aside.player, 1.0f);
+  // On screen the body's shadow darkens the board's centre; its edge stays lit. (A sensor glows
+  // with its reading, evenly, so the shadow is not black.)
+  EXPECT_GT(between.edge - between.centre, 20);
+  EXPECT_LT(between.centre, aside.centre - 20);
+}
+
+// Camera rays from the eye pass through the body (looking down, the floor is seen); rays that
+// come back from a mirror meet it.
+TEST_F(SimulationTest, the_player_body_shows_in_a_mirror_but_not_from_the_eye) {
+  auto centreInstance = [&](const std::string& camera) {
+    const game::Level level = game::parseLevel(R"({
+      "format": 1, "name": "Mirror",
+      "camera": )" + camera + R"(,
+      "materials": { "paint": {}, "silver": { "mirror": { "reflectance": 1 } } },
+      "meshes": { "floor": { "box": { "size": [40, 1, 40] } }, "mirror": { "box": { "size": [2, 2.5, 0.05] } } },
+      "entities": {
+        "floor": { "mesh": "floor", "material": "paint", "position": [0, -0.5, 0] },
+        "mirror": { "mesh": "mirror", "material": "silver", "position": [0, 1.25, -2] }
+      },
+      "lights": { "lamp": { "type": "point", "position": [0, 3, 0], "intensity": 5 } }
+    })",
+                                               "mirror.json");
+    sim::Simulation simulation(context(), compiler(), level, {33, 19, 1, 0});
+    simulation.renderPicture();
+    return simulation.renderer().pixelPaths()[9 * 33 + 16].finalInstance;
+  };
+  const uint32_t floor = 0, body = 2;  // the body comes after the level's entities
+  EXPECT_EQ(centreInstance(R"({ "position": [0, 1.65, 0] })"), body);
+  EXPECT_EQ(centreInstance(R"({ "position": [0, 1.65, 0], "pitch_degrees": -89 })"), floor);
+}
