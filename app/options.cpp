@@ -79,6 +79,10 @@ const std::vector<OptionSpec> kOptions{
      "one counter atomic per pixel even where the GPU could sum them per\nsubgroup first (to "
      "measure the difference)",
      kPicture},
+    {"--no-light-routes", "",
+     "light reaches surfaces and sensors only directly, not via mirrors (to\nmeasure what routing "
+     "costs; probes then differ from the game's)",
+     kPicture},
     {"--device", "SEL", "device index or part of its name (see `sightline devices`)", kRendering},
     {"--validate", "", "enable the Vulkan validation layer (with synchronization checks)",
      join(kRendering, {"devices"})},
@@ -268,6 +272,8 @@ Options parseOptions(int argc, char** argv) {
       options.rowGroups = parseCount("--row-groups", value(), 1, 64);
     } else if (argument == "--no-subgroup-counters") {
       options.subgroupCounters = false;
+    } else if (argument == "--no-light-routes") {
+      options.lightRoutes = false;
     } else if (argument == "--device") {
       options.device = value();
     } else if (argument == "--validate") {

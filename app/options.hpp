@@ -34,6 +34,7 @@ struct Options {
   float exposure = 1.0f;
   uint32_t rowGroups = 0;        // 0: the renderer's choice for the device
   bool subgroupCounters = true;  // --no-subgroup-counters: one atomic per pixel
+  bool lightRoutes = true;       // --no-light-routes: direct light only
   std::string device;
   bool validate = false;
   bool watch = false;

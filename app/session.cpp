@@ -25,6 +25,7 @@ render::RendererOptions rendererOptionsFor(const Options& options, uint32_t widt
   rendererOptions.height = height;
   rendererOptions.rowGroups = options.rowGroups;
   rendererOptions.subgroupCounters = options.subgroupCounters;
+  rendererOptions.lightRoutes = options.lightRoutes;
   return rendererOptions;
 }
 

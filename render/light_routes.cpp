@@ -31,6 +31,37 @@ bool lightInFront(const gpu::GpuLight& light, const MirrorFace& face) {
   return signedDistance(face, glm::vec3(light.positionType)) > -reach;
 }
 
+// Whether some point of `next` can see the (image) light through `through`'s rectangle: the
+// corners of `next` projected towards the light onto `through`'s plane must not all fall on one
+// side outside it (widened by the light's extent). Corners whose way to the light does not
+// cross the plane leave the answer yes.
+bool seesLightThrough(const MirrorFace& next, const MirrorFace& through,
+                      const gpu::GpuLight& light) {
+  const auto type = static_cast<uint32_t>(light.positionType.w);
+  float reach = light.radianceRadius.w;
+  if (type == LIGHT_RECTANGLE) reach = 0.5f * glm::length(glm::vec2(light.extent));
+  if (type == LIGHT_DIRECTIONAL) reach = 0.0f;
+  const glm::vec3 u = glm::normalize(through.halfU), v = glm::normalize(through.halfV);
+  const glm::vec2 half(glm::length(through.halfU) + reach, glm::length(through.halfV) + reach);
+  glm::vec2 low(INFINITY), high(-INFINITY);
+  for (const float su : {-1.0f, 1.0f}) {
+    for (const float sv : {-1.0f, 1.0f}) {
+      const glm::vec3 corner = next.centre + su * next.halfU + sv * next.halfV;
+      const glm::vec3 towards = type == LIGHT_DIRECTIONAL ? -glm::vec3(light.directionEnabled)
+                                                          : glm::vec3(light.positionType) - corner;
+      const float along = glm::dot(through.normal, towards);
+      if (along == 0.0f) return true;
+      const float t = -signedDistance(through, corner) / along;
+      if (!(t > 0.0f) || (type != LIGHT_DIRECTIONAL && !(t < 1.0f))) return true;
+      const glm::vec3 onPlane = corner + towards * t - through.centre;
+      const glm::vec2 at(glm::dot(onPlane, u), glm::dot(onPlane, v));
+      low = glm::min(low, at);
+      high = glm::max(high, at);
+    }
+  }
+  return high.x >= -half.x && low.x <= half.x && high.y >= -half.y && low.y <= half.y;
+}
+
 glm::vec3 reflectPoint(const MirrorFace& face, const glm::vec3& point) {
   return point - 2.0f * signedDistance(face, point) * face.normal;
 }
@@ -101,7 +132,8 @@ std::vector<gpu::GpuLightRoute> findLightRoutes(std::span<const MirrorFace> face
         if (length > 1) {
           const MirrorFace& previous = faces[partial.lastFace];
           if (f == partial.lastFace || farthestCorner(face, previous) <= 0.0f ||
-              farthestCorner(previous, face) <= 0.0f)
+              farthestCorner(previous, face) <= 0.0f ||
+              !seesLightThrough(face, previous, partial.route.image))
             continue;
         }
         next.push_back(extended(partial, face, f));

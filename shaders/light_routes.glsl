@@ -6,18 +6,24 @@ layout(set = 0, binding = BINDING_LIGHT_ROUTES, std430) readonly buffer LightRou
   GpuLightRoute routes[];
 };
 
-// Where the ray meets the face's plane, if it does before `distance`, from the reflecting side
-// and within the face's rectangle widened by `margin`.
-bool crossesFace(GpuRouteMirror face, vec3 origin, vec3 direction, float distance, float margin,
+// Routes are read from the buffer by index, field by field: a route is 304 bytes, and copying
+// whole ones for each pixel and route costs a CPU driver more than the tests themselves.
+
+// Where the ray meets the plane of face `i` of `route`, if it does before `distance`, from the
+// reflecting side and within the face's rectangle widened by `margin`.
+bool crossesFace(uint route, uint i, vec3 origin, vec3 direction, float distance, float margin,
                  out float t) {
   t = 0.0;
-  float facing = dot(direction, face.plane.xyz);
+  vec4 plane = routes[route].mirrors[i].plane;
+  float facing = dot(direction, plane.xyz);
   if (facing >= 0.0) return false;
-  t = (face.plane.w - dot(face.plane.xyz, origin)) / facing;
+  t = (plane.w - dot(plane.xyz, origin)) / facing;
   if (!(t > 0.0 && t < distance)) return false;
-  vec3 offset = origin + direction * t - face.centre.xyz;
-  return abs(dot(offset, face.halfU.xyz)) <= face.halfU.w * (face.halfU.w + margin) &&
-         abs(dot(offset, face.halfV.xyz)) <= face.halfV.w * (face.halfV.w + margin);
+  vec3 offset = origin + direction * t - routes[route].mirrors[i].centre.xyz;
+  vec4 halfU = routes[route].mirrors[i].halfU;
+  vec4 halfV = routes[route].mirrors[i].halfV;
+  return abs(dot(offset, halfU.xyz)) <= halfU.w * (halfU.w + margin) &&
+         abs(dot(offset, halfV.xyz)) <= halfV.w * (halfV.w + margin);
 }
 
 // How far a sampled point on the image light can be from its centre: the ray towards it crosses
@@ -29,21 +35,28 @@ float imageReach(GpuLight image) {
   return 0.0;
 }
 
+// Whether a point at `position` is in front of the route's first face: the cheap test that
+// rejects most of the scene before anything else is read.
+bool facesRoute(uint route, vec3 position) {
+  vec4 plane = routes[route].mirrors[0].plane;
+  return dot(plane.xyz, position) > plane.w;
+}
+
 // Whether the ray towards the image's centre crosses every face of the route, each widened by
 // what sampling the light's extent can add: where the route can light a point at all.
-bool routeCanReach(GpuLightRoute route, vec3 origin, vec3 direction, float distance) {
-  float reach = imageReach(route.image);
-  float angle = uint(route.image.positionType.w) == LIGHT_DIRECTIONAL
-                    ? 0.5 * route.image.extent.z : 0.0;
+bool routeCanReach(uint route, vec3 origin, vec3 direction, float distance) {
+  GpuLight image = routes[route].image;
+  float reach = imageReach(image);
+  float angle = uint(image.positionType.w) == LIGHT_DIRECTIONAL ? 0.5 * image.extent.z : 0.0;
   float travelled = 0.0;
-  for (uint i = 0u; i < route.lightMirrors.y; ++i) {
-    GpuRouteMirror face = route.mirrors[i];
+  uint count = routes[route].lightMirrors.y;
+  for (uint i = 0u; i < count; ++i) {
     float t;
-    if (!crossesFace(face, origin, direction, distance, reach + angle * travelled * 1.01 + 1e-6,
-                     t))
+    if (!crossesFace(route, i, origin, direction, distance,
+                     reach + angle * travelled * 1.01 + 1e-6, t))
       return false;
     origin += direction * t;
-    direction = reflect(direction, face.plane.xyz);
+    direction = reflect(direction, routes[route].mirrors[i].plane.xyz);
     distance -= t;
     travelled += t;
   }
@@ -52,24 +65,24 @@ bool routeCanReach(GpuLightRoute route, vec3 origin, vec3 direction, float dista
 
 // What arrives along the route from `origin` towards a point `distance` away on the image
 // (unfolded): 0 when the ray misses a face or something opaque is in the way, else the glass
-// transmittance of every stretch. The mirrors' tints are the caller's (route.tint).
-vec3 routeTransmittance(GpuLightRoute route, vec3 origin, vec3 direction, float distance) {
+// transmittance of every stretch. The mirrors' tints are the caller's (the route's tint).
+vec3 routeTransmittance(uint route, vec3 origin, vec3 direction, float distance) {
   vec3 starts[MAX_ROUTE_MIRRORS + 1];
   vec3 directions[MAX_ROUTE_MIRRORS + 1];
   float lengths[MAX_ROUTE_MIRRORS + 1];
-  uint count = route.lightMirrors.y;
+  uint count = routes[route].lightMirrors.y;
   // Geometry first, which rejects most points without tracing anything.
   for (uint i = 0u; i < count; ++i) {
-    GpuRouteMirror face = route.mirrors[i];
     float t;
-    if (!crossesFace(face, origin, direction, distance, 0.0, t)) return vec3(0.0);
+    if (!crossesFace(route, i, origin, direction, distance, 0.0, t)) return vec3(0.0);
+    vec3 normal = routes[route].mirrors[i].plane.xyz;
     starts[i] = origin;
     directions[i] = direction;
     lengths[i] = t * 0.9999;  // stop short of the mirror itself
     vec3 onFace = origin + direction * t;
     float step = max(max(abs(onFace.x), abs(onFace.y)), max(abs(onFace.z), t)) / 65536.0;
-    origin = onFace + face.plane.xyz * max(step, 1e-30);
-    direction = reflect(direction, face.plane.xyz);
+    origin = onFace + normal * max(step, 1e-30);
+    direction = reflect(direction, normal);
     distance -= t;
   }
   starts[count] = origin;
@@ -85,15 +98,14 @@ vec3 routeTransmittance(GpuLightRoute route, vec3 origin, vec3 direction, float 
 
 // A point on the route's image light seen from `position` (sampleLight with the image's own
 // rectangle sides, which mirroring turned).
-void sampleRouteLight(GpuLightRoute route, vec3 position, vec2 u, out vec3 direction,
-                      out float distance) {
-  GpuLight image = route.image;
+void sampleRouteLight(uint route, vec3 position, vec2 u, out vec3 direction, out float distance) {
+  GpuLight image = routes[route].image;
   if (uint(image.positionType.w) != LIGHT_RECTANGLE) {
     sampleLight(image, position, u, direction, distance);
     return;
   }
   vec3 normal = image.directionEnabled.xyz;
-  vec3 tangent = route.imageTangent.xyz;
+  vec3 tangent = routes[route].imageTangent.xyz;
   vec3 bitangent = cross(normal, tangent);
   vec3 onLight = image.positionType.xyz + tangent * ((u.x - 0.5) * image.extent.x) +
                  bitangent * ((u.y - 0.5) * image.extent.y);

@@ -167,7 +167,7 @@ struct ProbeResults {
 // Light routed by flat mirrors: for each light and each sequence of mirror faces its light can
 // take (at most MAX_ROUTE_MIRRORS), the light's mirror image. A point lit via the route sees the
 // image; the ray towards the image must cross each face's rectangle from its reflecting side.
-#define MAX_LIGHT_ROUTES 16
+#define MAX_LIGHT_ROUTES 8
 #define MAX_ROUTE_MIRRORS 3
 
 struct GpuRouteMirror {
