@@ -37,6 +37,7 @@ scene::SceneDesc buildSceneDesc(const Level& level) {
   scene.lights = level.lights;  // with enabled, radius, size and angular diameter
   scene.environment = level.environment;
   scene.maxMirrorBounces = level.maxMirrorBounces;
+  scene.lightViaMirrors = level.lightViaMirrors;
   scene.instances.reserve(level.entities.size());
   for (const Entity& entity : level.entities) {
     scene.instances.push_back(

@@ -89,6 +89,7 @@ struct Level {
   scene::CameraDesc camera;
   scene::EnvironmentDesc environment;  // sky colours already times sky_intensity
   uint32_t maxMirrorBounces = 4;
+  bool lightViaMirrors = true;           // "light_via_mirrors": flat mirrors send lights' light on
   std::vector<std::string> materialIds;  // parallel to materials
   std::vector<scene::MaterialDesc> materials;
   std::vector<scene::TextureDesc> textures;  // referenced by materials

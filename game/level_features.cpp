@@ -21,8 +21,8 @@ LevelFeatures levelFeatures(const Level& level) {
     features.interactables = features.interactables || entity.interactable.has_value();
   }
   features.mirrorBounces = features.mirrors ? std::min(level.maxMirrorBounces, 31u) : 0;
-  features.lightViaMirrors =
-      features.lightViaMirrors && !level.lights.empty() && features.mirrorBounces > 0;
+  features.lightViaMirrors = features.lightViaMirrors && level.lightViaMirrors &&
+                             !level.lights.empty() && features.mirrorBounces > 0;
   for (const scene::LightDesc& light : level.lights) {
     const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f

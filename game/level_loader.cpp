@@ -46,7 +46,7 @@ Level readLevel(LevelReader& reader, const std::string& text) {
     level.environment = readEnvironment(reader, root["environment"], "/environment");
   }
   if (root.contains("rendering")) {
-    level.maxMirrorBounces = readRendering(reader, root["rendering"], "/rendering");
+    readRendering(reader, root["rendering"], "/rendering", level);
   }
 
   // Every id is known before any reference is read, so a reference can say what an id of the
@@ -87,7 +87,8 @@ Level readLevel(LevelReader& reader, const std::string& text) {
       [&](const std::string& id, const OrderedJson& value, const std::string& pointer) {
         level.entities.push_back(readEntity(reader, id, value, pointer, level));
         const Entity& entity = level.entities.back();
-        if (level.materials[entity.material].kind == scene::MaterialKind::Mirror &&
+        if (level.lightViaMirrors &&
+            level.materials[entity.material].kind == scene::MaterialKind::Mirror &&
             scene::flatFaces(level.meshes[entity.mesh]).empty())
           level.warnings.push_back(
               reader.placeOf(pointer) +

@@ -18,8 +18,8 @@ PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
       features.lightRoutes = !scene::flatFaces(scene.meshes[instance.mesh]).empty();
   }
   features.maxMirrorBounces = features.mirrors ? std::min(scene.maxMirrorBounces, 31u) : 0;
-  features.lightRoutes =
-      features.lightRoutes && !scene.lights.empty() && features.maxMirrorBounces > 0;
+  features.lightRoutes = features.lightRoutes && scene.lightViaMirrors && !scene.lights.empty() &&
+                         features.maxMirrorBounces > 0;
   for (const scene::LightDesc& light : scene.lights) {
     const bool hasExtent = light.type == scene::LightType::Directional
                                ? light.angularDiameterRadians > 0.0f

@@ -93,6 +93,7 @@ struct SceneDesc {
   std::vector<LightDesc> lights;
   EnvironmentDesc environment;
   uint32_t maxMirrorBounces = 4;  // [0, 31]
+  bool lightViaMirrors = true;    // false: lights reach surfaces and sensors only directly
   // The level has exposure probes (lit goals, stealth): the pipeline gets the probe ray-gen.
   bool exposureProbes = false;
 };

@@ -564,6 +564,20 @@ TEST(LevelLoader, a_flat_mirror_routes_light_and_a_curved_one_warns) {
                 "levels/test.json:7:25: /entities/crate: a mirror on a curved mesh shows the "
                 "reflected view but sends no light on (only flat mirror faces light surfaces and "
                 "sensors)"}));
+
+  // A level can turn routing off: then a curved mirror loses nothing and nothing warns.
+  const std::string offText =
+      replaced(curvedText, R"("lights")", R"("rendering": {"light_via_mirrors": false}, "lights")");
+  const game::Level off = game::parseLevel(offText, "levels/test.json");
+  EXPECT_FALSE(off.lightViaMirrors);
+  EXPECT_TRUE(off.warnings.empty());
+  EXPECT_FALSE(
+      game::levelFeatures(
+          game::parseLevel(replaced(text, R"("lights")",
+                                    R"("rendering": {"light_via_mirrors": false}, "lights")"),
+                           "levels/test.json"))
+          .lightViaMirrors);
+  EXPECT_FALSE(game::buildSceneDesc(off).lightViaMirrors);
 }
 
 TEST(LevelLoader, shipped_levels_load) {

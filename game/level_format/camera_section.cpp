@@ -18,11 +18,12 @@ scene::CameraDesc readCamera(const LevelReader& reader, const OrderedJson& camer
   return desc;
 }
 
-uint32_t readRendering(const LevelReader& reader, const OrderedJson& rendering,
-                       const std::string& pointer) {
-  reader.checkKeys(rendering, pointer, {"max_mirror_bounces"}, {});
-  return reader.readOptionalCount(rendering, "max_mirror_bounces", pointer, 0, kMaxMirrorBounces,
-                                  4);
+void readRendering(const LevelReader& reader, const OrderedJson& rendering,
+                   const std::string& pointer, Level& level) {
+  reader.checkKeys(rendering, pointer, {"max_mirror_bounces", "light_via_mirrors"}, {});
+  level.maxMirrorBounces =
+      reader.readOptionalCount(rendering, "max_mirror_bounces", pointer, 0, kMaxMirrorBounces, 4);
+  level.lightViaMirrors = reader.readOptionalBool(rendering, "light_via_mirrors", pointer, true);
 }
 
 }  // namespace game::level_format

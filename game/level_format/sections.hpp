@@ -13,9 +13,9 @@ namespace game::level_format {
 
 scene::CameraDesc readCamera(const LevelReader& reader, const OrderedJson& camera,
                              const std::string& pointer);
-// The most mirror bounces a path may take.
-uint32_t readRendering(const LevelReader& reader, const OrderedJson& rendering,
-                       const std::string& pointer);
+// The most mirror bounces a path may take, and whether light is routed via mirrors.
+void readRendering(const LevelReader& reader, const OrderedJson& rendering,
+                   const std::string& pointer, Level& level);
 scene::EnvironmentDesc readEnvironment(const LevelReader& reader, const OrderedJson& environment,
                                        const std::string& pointer);
 scene::MaterialDesc readMaterial(LevelReader& reader, const OrderedJson& material,
