@@ -81,6 +81,14 @@ int commandInfo(const Options& options) {
   std::printf("  %s, %s, %s\n", counted(features.lights, "light").c_str(),
               counted(level.materials.size(), "material").c_str(),
               counted(level.textures.size(), "texture").c_str());
+  for (std::size_t mesh = 0; mesh < level.meshes.size(); ++mesh) {
+    const std::vector<std::string>& names = level.meshMaterialNames[mesh];
+    if (names.empty()) continue;
+    std::string list;
+    for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+    std::printf("  mesh \"%s\": glTF, %s: %s\n", level.meshIds[mesh].c_str(),
+                counted(names.size(), "material").c_str(), list.c_str());
+  }
   std::printf("  glass: %s\n", features.glass ? "yes" : "no");
   if (features.mirrors) {
     std::printf("  mirrors: yes, up to %u bounces\n", features.mirrorBounces);

@@ -27,6 +27,8 @@ class MaterialMapper {
                                    : "material \"" + material.name + "\"";
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     GltfMaterial result;
+    result.name =
+        material.name.empty() ? "material " + std::to_string(materialIndex) : material.name;
     result.baseColor = factors<3>(pbr.baseColorFactor, "baseColorFactor", result.baseColor);
     result.roughness = factor(pbr.roughnessFactor, "roughnessFactor");
     result.specular = 0.04f + 0.96f * factor(pbr.metallicFactor, "metallicFactor");

@@ -147,11 +147,21 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
                               " degenerate triangles");
   }
 
-  if (const int materialIndex = assembler.firstMaterial(); materialIndex >= 0) {
-    if (!validIndex(materialIndex, model.materials)) {
-      fail(file, "refers to material " + std::to_string(materialIndex) + ", which does not exist");
+  const std::vector<int>& materials = assembler.materials();
+  if (std::any_of(materials.begin(), materials.end(), [](int index) { return index >= 0; })) {
+    for (const int materialIndex : materials) {
+      if (materialIndex < 0) {
+        GltfMaterial fallback;  // glTF's default material, as mapped
+        fallback.name = "default";
+        result.materials.push_back(fallback);
+        continue;
+      }
+      if (!validIndex(materialIndex, model.materials)) {
+        fail(file,
+             "refers to material " + std::to_string(materialIndex) + ", which does not exist");
+      }
+      result.materials.push_back(gltf::mapMaterial(model, file, materialIndex, result.warnings));
     }
-    result.material = gltf::mapMaterial(model, file, materialIndex, result.warnings);
   }
 
   // The model first, as given, then each buffer and image file in the order tinygltf read them.

@@ -11,8 +11,9 @@
 
 namespace game {
 
-// The model's own material (its first primitive's), mapped to ours; see docs/LEVELS.md.
+// One of the model's own materials, mapped to ours; see docs/LEVELS.md.
 struct GltfMaterial {
+  std::string name;           // the glTF material's name, or "material N", or "default"
   glm::vec3 baseColor{1.0f};  // linear (glTF factors are linear)
   float specular = 0.04f;     // 0.04 + 0.96 * metallic
   float roughness = 1.0f;
@@ -30,15 +31,19 @@ struct GltfSelection {
 };
 
 struct GltfModel {
-  scene::MeshData mesh;  // positions, normals, UVs; degenerate triangles dropped
-  std::optional<GltfMaterial> material;
+  // Positions, normals, UVs; degenerate triangles dropped; with several materials, which one
+  // each triangle has (mesh.triangleMaterials indexes `materials`).
+  scene::MeshData mesh;
+  // The primitives' materials in order of first use (a primitive without one gets glTF's
+  // default material); empty when no primitive names one.
+  std::vector<GltfMaterial> materials;
   std::vector<std::filesystem::path> filesRead;  // the model and every buffer/image it named
   std::vector<std::string> warnings;             // "<file>: dropped N degenerate triangles"
 };
 
 // Reads `file`; every file tinygltf opens must resolve inside `allowedRoot`. Meshes are
-// appended depth first in document order; the material is that of the first primitive
-// appended, and only the images it uses are decoded (through decodeTexture, so with its limits).
+// appended depth first in document order; every primitive keeps its material, and only the
+// images those materials use are decoded (through decodeTexture, so with its limits).
 // Throws game::LevelError("<file>: <problem>"); the problem names the mesh, primitive, material
 // or image at fault.
 GltfModel loadGltfModel(const std::filesystem::path& file, const std::filesystem::path& allowedRoot,

@@ -1,5 +1,6 @@
 #include "game/gltf_mesh_assembler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -125,12 +126,15 @@ scene::MeshData MeshAssembler::finish(std::string name) {
     fail(file_, "contains no triangles");
   }
   result_.name = std::move(name);
+  if (materials_.size() <= 1) result_.triangleMaterials.clear();  // one material: none needed
   return std::move(result_);
 }
 
 void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
                                     const glm::dmat4& transform, const std::string& label) {
-  if (!firstMaterial_) firstMaterial_ = primitive.material;
+  const auto known = std::find(materials_.begin(), materials_.end(), primitive.material);
+  const auto localMaterial = static_cast<uint32_t>(known - materials_.begin());
+  if (known == materials_.end()) materials_.push_back(primitive.material);
   const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
   if (mode != TINYGLTF_MODE_TRIANGLES) {
     fail(file_, label + " has mode " + std::to_string(mode) + " (" + modeName(mode) +
@@ -208,6 +212,7 @@ void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
   for (const uint32_t index : kept) {
     result_.indices.push_back(static_cast<uint32_t>(base + index));
   }
+  result_.triangleMaterials.insert(result_.triangleMaterials.end(), kept.size() / 3, localMaterial);
 }
 
 void MeshAssembler::expectOnePerPosition(std::size_t count, std::size_t positionCount,

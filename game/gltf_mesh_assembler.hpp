@@ -25,8 +25,9 @@ class MeshAssembler {
 
   void appendMesh(int meshIndex, const glm::dmat4& transform);
 
-  // The material of the first primitive appended, -1 when it has none.
-  int firstMaterial() const { return firstMaterial_.value_or(-1); }
+  // The glTF materials of the primitives appended, in order of first use (-1: a primitive
+  // without one); the mesh's triangleMaterials index this list.
+  const std::vector<int>& materials() const { return materials_; }
   std::size_t droppedTriangles() const { return dropped_; }
 
   scene::MeshData finish(std::string name);
@@ -48,7 +49,7 @@ class MeshAssembler {
   const tinygltf::Model& model_;
   const std::filesystem::path& file_;
   scene::MeshData result_;
-  std::optional<int> firstMaterial_;
+  std::vector<int> materials_;
   std::size_t dropped_ = 0;
 };
 

@@ -40,8 +40,13 @@ scene::SceneDesc buildSceneDesc(const Level& level) {
   scene.lightViaMirrors = level.lightViaMirrors;
   scene.instances.reserve(level.entities.size());
   for (const Entity& entity : level.entities) {
-    scene.instances.push_back(
-        {entity.mesh, entity.material, entityTransform(entity), entity.castsShadow});
+    scene::InstanceDesc instance;
+    instance.mesh = entity.mesh;
+    instance.material = entity.material;
+    instance.meshMaterials = entity.meshMaterials;
+    instance.objectToWorld = entityTransform(entity);
+    instance.castsShadow = entity.castsShadow;
+    scene.instances.push_back(std::move(instance));
   }
   return scene;
 }

@@ -43,6 +43,9 @@ struct Entity {
   std::string id;
   uint32_t mesh = 0;      // index into Level::meshes
   uint32_t material = 0;  // index into Level::materials
+  // A glTF mesh of several materials shown with its own: the level material for each of the
+  // mesh's (empty: `material` everywhere, as when the entity names one).
+  std::vector<uint32_t> meshMaterials;
   glm::vec3 position{0.0f};
   glm::vec3 rotationDegrees{0.0f};  // x: pitch, y: yaw, z: roll; applied yaw, pitch, roll
   glm::vec3 scale{1.0f};
@@ -95,6 +98,9 @@ struct Level {
   std::vector<scene::TextureDesc> textures;  // referenced by materials
   std::vector<std::string> meshIds;          // parallel to meshes
   std::vector<scene::MeshData> meshes;
+  // Parallel to meshes: a glTF model's own materials by name, in mesh-material order (empty for
+  // built-in shapes and models without materials), for `sightline info`.
+  std::vector<std::vector<std::string>> meshMaterialNames;
   std::vector<Entity> entities;
   std::vector<std::string> lightIds;  // parallel to lights
   std::vector<scene::LightDesc> lights;

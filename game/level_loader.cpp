@@ -70,6 +70,7 @@ Level readLevel(LevelReader& reader, const std::string& text) {
       root["meshes"], "/meshes",
       [&](const std::string& id, const OrderedJson& value, const std::string& pointer) {
         level.meshIds.push_back(id);
+        level.meshMaterialNames.emplace_back();
         level.meshes.push_back(readMesh(reader, value, pointer, level));
         level.meshes.back().name = id;
       });

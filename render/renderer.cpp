@@ -99,11 +99,26 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   }
   triangleCount_ = 0;
   std::vector<gpu::GpuInstance> gpuInstances;
+  std::vector<uint32_t> triangleMaterials;
   for (const scene::InstanceDesc& instance : scene.instances) {
     if (instance.mesh >= ranges.size() || instance.material >= scene.materials.size())
       throw RenderError("an instance refers to a mesh or material that does not exist");
     const MeshRange& range = ranges[instance.mesh];
-    gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, instance.material, 0),
+    uint32_t material = instance.material;
+    const std::vector<uint32_t>& perTriangle = scene.meshes[instance.mesh].triangleMaterials;
+    if (!instance.meshMaterials.empty() && !perTriangle.empty()) {
+      if (perTriangle.size() != range.indexCount / 3)
+        throw RenderError("mesh '" + scene.meshes[instance.mesh].name +
+                          "' has a material for other than every triangle");
+      material = MATERIAL_PER_TRIANGLE | static_cast<uint32_t>(triangleMaterials.size());
+      for (const uint32_t own : perTriangle) {
+        if (own >= instance.meshMaterials.size() ||
+            instance.meshMaterials[own] >= scene.materials.size())
+          throw RenderError("an instance refers to a mesh material that does not exist");
+        triangleMaterials.push_back(instance.meshMaterials[own]);
+      }
+    }
+    gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, material, 0),
                             {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
     currentTransforms_.push_back(instance.objectToWorld);
     instanceVisible_.push_back(true);
@@ -135,6 +150,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   instances_ = makeStorage(context, gpuInstances, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
   materials_ = makeStorage(context, gpuMaterials, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
   lights_ = makeStorage(context, gpuLights_, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
+  triangleMaterials_ = makeStorage(context, triangleMaterials, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                   "triangle materials");
   // The texture array is never empty: a white texel stands in when the scene has none.
   if (scene.textures.empty()) {
     textures_.push_back(std::make_unique<Texture>(
@@ -266,7 +283,7 @@ void Renderer::destroyHandles() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 13> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 14> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -280,6 +297,7 @@ void Renderer::createDescriptors() {
       {BINDING_PATHS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_PROBE_SETUP, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_LIGHT_ROUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_TRIANGLE_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
   constexpr uint32_t kSets = 2;
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
@@ -322,7 +340,7 @@ void Renderer::createDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   tlasWrite.accelerationStructureCount = 1;
   tlasWrite.pAccelerationStructures = &tlas;
-  const std::array<std::pair<uint32_t, const Buffer*>, 10> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 11> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -333,6 +351,7 @@ void Renderer::createDescriptors() {
       {BINDING_PATHS, &paths_},
       {BINDING_PROBE_SETUP, &probeSetup_},
       {BINDING_LIGHT_ROUTES, &lightRoutes_},
+      {BINDING_TRIANGLE_MATERIALS, &triangleMaterials_},
   }};
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)

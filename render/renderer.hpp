@@ -155,7 +155,8 @@ class Renderer {
   Buffer paths_;
   Buffer probeSetup_;
   Buffer lightRoutes_;
-  bool routeLight_ = false;  // the variant routes light by mirrors
+  Buffer triangleMaterials_;  // scene material per triangle of instances of several materials
+  bool routeLight_ = false;   // the variant routes light by mirrors
   uint32_t routeMirrors_ = 0;
   std::vector<std::vector<scene::FlatFace>> mirrorFaces_;  // per instance, object space
   std::vector<glm::vec3> mirrorTints_;                     // per instance

@@ -27,6 +27,9 @@ struct MeshData {
   std::string name;
   std::vector<Vertex> vertices;
   std::vector<uint32_t> indices;  // three per triangle, counter-clockwise front faces
+  // Per triangle, which of the mesh's own materials it has (a glTF model's primitives); empty
+  // when one material covers the whole mesh.
+  std::vector<uint32_t> triangleMaterials;
 };
 
 enum class MaterialKind : uint32_t {
@@ -56,6 +59,9 @@ struct InstanceDesc {
   // The player's figure: casts shadows and shows in mirrors, but camera rays from the eye and
   // the player's own exposure probes pass through it.
   bool playerBody = false;
+  // With a mesh of several materials (MeshData::triangleMaterials): the scene material for each
+  // of the mesh's own; empty: `material` everywhere.
+  std::vector<uint32_t> meshMaterials;
 };
 
 enum class LightType : uint32_t {

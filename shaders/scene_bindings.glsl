@@ -19,5 +19,8 @@ layout(set = 0, binding = BINDING_PROBE_SETUP, std430) readonly buffer ProbeSetu
   ProbeSetup probeSetup;
   ProbePoint probePoints[];
 };
+layout(set = 0, binding = BINDING_TRIANGLE_MATERIALS, std430) readonly buffer TriangleMaterialBlock {
+  uint triangleMaterials[];
+};
 layout(set = 0, binding = BINDING_TEXTURES) uniform sampler2D textures[];
 layout(set = 0, binding = BINDING_PATHS, std430) writeonly buffer PathBlock { PixelPath paths[]; };

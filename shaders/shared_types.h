@@ -44,6 +44,7 @@ using uint = uint32_t;
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 #define BINDING_LIGHT_ROUTES 26  // lights seen via mirrors (levels with flat mirrors and lights)
+#define BINDING_TRIANGLE_MATERIALS 27  // per-triangle materials of meshes with several
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -95,9 +96,14 @@ struct FrameUniforms {
   uvec4 denoise;  // x: reset history, y: reference accumulation, z: filter iterations
 };
 
+// GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials
+// start in the triangle-material buffer (a glTF model of several materials).
+#define MATERIAL_PER_TRIANGLE 0x80000000u
+
 struct GpuInstance {
-  // x: first index, y: vertex offset, z: material, w: glow (float bits): light the game adds to
-  // the surface, times its albedo (an orb in focus, a lit sensor)
+  // x: first index, y: vertex offset, z: material (or MATERIAL_PER_TRIANGLE | first triangle
+  // material), w: glow (float bits): light the game adds to the surface, times its albedo (an orb
+  // in focus, a lit sensor)
   uvec4 geometry;
   // Rows of the previous frame's object-to-world times the current world-to-object, in render
   // space: where a point on this instance was one frame ago (identity when it did not move).

@@ -49,7 +49,10 @@ void main() {
   uint v1 = indices[firstIndex + 1u] + geometry.y;
   uint v2 = indices[firstIndex + 2u] + geometry.y;
   vec3 weights = vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
-  GpuMaterial material = materials[geometry.z];
+  uint materialIndex = geometry.z;
+  if ((materialIndex & MATERIAL_PER_TRIANGLE) != 0u)
+    materialIndex = triangleMaterials[(materialIndex & ~MATERIAL_PER_TRIANGLE) + gl_PrimitiveID];
+  GpuMaterial material = materials[materialIndex];
 
   vec3 p0 = fetchVec3(v0, 0u), p1 = fetchVec3(v1, 0u), p2 = fetchVec3(v2, 0u);
   vec2 uv0 = fetchUv(v0), uv1 = fetchUv(v1), uv2 = fetchUv(v2);
@@ -78,7 +81,7 @@ void main() {
   hit.shadingNormal = shading;
   hit.hitT = gl_HitTEXT;
   hit.geometricNormal = geometric;
-  hit.material = geometry.z;
+  hit.material = materialIndex;
   hit.albedo = albedo;
   hit.instance = uint(gl_InstanceCustomIndexEXT);
 }

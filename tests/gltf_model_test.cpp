@@ -176,8 +176,8 @@ TEST(GltfCrate, geometry_matches_the_box_primitive_with_uvs) {
 
 TEST(GltfCrate, material_factors_and_textures_are_mapped) {
   const game::GltfModel model = game::loadGltfModel(kAssets / "crate.gltf", kAssets);
-  ASSERT_TRUE(model.material.has_value());
-  const game::GltfMaterial& material = *model.material;
+  ASSERT_FALSE(model.materials.empty());
+  const game::GltfMaterial& material = model.materials.front();
   EXPECT_FLOAT_EQ(material.baseColor.r, 0.9f);
   EXPECT_FLOAT_EQ(material.baseColor.g, 0.85f);
   EXPECT_FLOAT_EQ(material.baseColor.b, 0.8f);
@@ -231,7 +231,7 @@ TEST_F(GltfModelTest, missing_normals_are_area_weighted_face_normals) {
   EXPECT_EQ(model.mesh.vertices[1].normal, glm::vec3(0, 0, 1));
   EXPECT_EQ(model.mesh.vertices[4].normal, glm::vec3(1, 0, 0));
   EXPECT_EQ(model.mesh.vertices[1].uv, glm::vec2(0, 0));  // no TEXCOORD_0: zero
-  EXPECT_FALSE(model.material.has_value());
+  EXPECT_TRUE(model.materials.empty());
 }
 
 TEST_F(GltfModelTest, uvs_may_be_floats_or_normalized_bytes_and_shorts) {
@@ -409,29 +409,36 @@ TEST_F(GltfModelTest, mirroring_node_keeps_counter_clockwise_winding) {
 
 // ----- materials and textures -----
 
-TEST_F(GltfModelTest, first_primitives_material_is_mapped_with_defaults) {
+TEST_F(GltfModelTest, every_primitive_keeps_its_material_in_order_of_first_use) {
   GltfBuilder gltf;
   json first = gltf.primitive(kTriangle);
   first["material"] = 1;
   json second = gltf.primitive(kTriangle);
   second["material"] = 0;
-  gltf.addMesh("two", {first, second});
+  json third = gltf.primitive(kTriangle);  // none: glTF's default material
+  gltf.addMesh("three", {first, second, third});
   gltf.document["materials"] = {
-      {{"name", "unused"}},
+      {{"name", "plain"}},
       {{"name", "shiny"},
        {"pbrMetallicRoughness",
         {{"baseColorFactor", {0.5, 0.25, 1.0, 0.5}}, {"metallicFactor", 0.5}}},
        {"emissiveFactor", {0.25, 0.5, 1.0}}},
   };
-  gltf.write(root_ / "two.gltf");
-  const game::GltfModel model = game::loadGltfModel(root_ / "two.gltf", root_);
-  ASSERT_TRUE(model.material.has_value());
-  EXPECT_EQ(model.material->baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
-  EXPECT_FLOAT_EQ(model.material->specular, 0.04f + 0.96f * 0.5f);
-  EXPECT_FLOAT_EQ(model.material->roughness, 1.0f);  // glTF's default roughnessFactor
-  EXPECT_EQ(model.material->emissive, glm::vec3(0.25f, 0.5f, 1.0f));
-  EXPECT_FALSE(model.material->colorTexture.has_value());
-  EXPECT_FALSE(model.material->normalTexture.has_value());
+  gltf.write(root_ / "three.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "three.gltf", root_);
+  ASSERT_EQ(model.materials.size(), 3u);
+  EXPECT_EQ(model.mesh.triangleMaterials, (std::vector<uint32_t>{0, 1, 2}));
+  const game::GltfMaterial& shiny = model.materials[0];
+  EXPECT_EQ(shiny.name, "shiny");
+  EXPECT_EQ(shiny.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
+  EXPECT_FLOAT_EQ(shiny.specular, 0.04f + 0.96f * 0.5f);
+  EXPECT_FLOAT_EQ(shiny.roughness, 1.0f);  // glTF's default roughnessFactor
+  EXPECT_EQ(shiny.emissive, glm::vec3(0.25f, 0.5f, 1.0f));
+  EXPECT_FALSE(shiny.colorTexture.has_value());
+  EXPECT_FALSE(shiny.normalTexture.has_value());
+  EXPECT_EQ(model.materials[1].name, "plain");
+  EXPECT_EQ(model.materials[1].baseColor, glm::vec3(1.0f));
+  EXPECT_EQ(model.materials[2].name, "default");
 }
 
 // A one-triangle model whose material uses image 0 as its base colour texture.
@@ -450,8 +457,8 @@ TEST_F(GltfModelTest, embedded_data_uri_image_is_decoded) {
   texturedTriangle({{"uri", "data:image/png;base64," + base64(tinyPng())}})
       .write(root_ / "embedded.gltf");
   const game::GltfModel model = game::loadGltfModel(root_ / "embedded.gltf", root_);
-  ASSERT_TRUE(model.material && model.material->colorTexture);
-  const scene::TextureDesc& texture = *model.material->colorTexture;
+  ASSERT_TRUE(!model.materials.empty() && model.materials.front().colorTexture);
+  const scene::TextureDesc& texture = *model.materials.front().colorTexture;
   EXPECT_EQ(texture.name, (root_ / "embedded.gltf").string() + " image 0");
   EXPECT_EQ(texture.rgba, (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
   EXPECT_EQ(model.filesRead, std::vector<fs::path>{root_ / "embedded.gltf"});
@@ -473,8 +480,8 @@ TEST_F(GltfModelTest, glb_image_in_a_buffer_view_is_decoded) {
                                    u32(text.size()) + "JSON" + text + u32(bin.size()) +
                                    std::string("BIN\0", 4) + bin);
   const game::GltfModel model = game::loadGltfModel(root_ / "tri.glb", root_);
-  ASSERT_TRUE(model.material && model.material->colorTexture);
-  EXPECT_EQ(model.material->colorTexture->rgba,
+  ASSERT_TRUE(!model.materials.empty() && model.materials.front().colorTexture);
+  EXPECT_EQ(model.materials.front().colorTexture->rgba,
             (std::vector<uint8_t>{255, 0, 0, 255, 0, 255, 0, 255}));
 }
 
@@ -536,7 +543,7 @@ TEST_F(GltfModelTest, external_buffer_and_image_are_listed_in_files_read) {
   const game::GltfModel model = game::loadGltfModel(root_ / "tri.gltf", root_);
   EXPECT_EQ(model.filesRead, (std::vector<fs::path>{root_ / "tri.gltf", root_ / "tri.bin",
                                                     root_ / "textures" / "tiny.png"}));
-  EXPECT_EQ(model.material->colorTexture->name, (root_ / "textures" / "tiny.png").string());
+  EXPECT_EQ(model.materials.front().colorTexture->name, (root_ / "textures" / "tiny.png").string());
   EXPECT_EQ(readFile(root_ / "tri.bin"), gltf.buffer);
 }
 

@@ -8,45 +8,54 @@ namespace game::level_format {
 
 namespace {
 
-// The material made from a glTF mesh's own, created on first use as "<mesh id>#gltf".
-uint32_t modelMaterial(LevelReader& reader, uint32_t mesh, const std::string& entityPointer,
-                       Level& level) {
+// The materials made from a glTF mesh's own, one per mesh material, created on first use as
+// "<mesh id>#gltf" (the first) and "<mesh id>#gltf:<n>" (the n-th after it).
+std::vector<uint32_t> modelMaterials(LevelReader& reader, uint32_t mesh,
+                                     const std::string& entityPointer, Level& level) {
   const std::string& meshId = level.meshIds[mesh];
   LevelReader::MeshMaterialSource& materialSource = reader.meshMaterialSources[mesh];
-  if (!materialSource.gltfMaterial) {
+  if (materialSource.gltfMaterials.empty()) {
     reader.failMissing(
         entityPointer, "material",
         " (mesh \"" + meshId + "\" " +
             (materialSource.isGltf ? "is a glTF model without a material" : "is not a glTF model") +
             ", so the entity must name one)");
   }
-  const std::string materialId = meshId + "#gltf";
-  const auto existing = std::find(level.materialIds.begin(), level.materialIds.end(), materialId);
-  if (existing != level.materialIds.end()) {
-    return static_cast<uint32_t>(existing - level.materialIds.begin());
+  std::vector<uint32_t> result;
+  for (std::size_t k = 0; k < materialSource.gltfMaterials.size(); ++k) {
+    const std::string materialId = meshId + "#gltf" + (k ? ":" + std::to_string(k) : "");
+    const auto existing = std::find(level.materialIds.begin(), level.materialIds.end(), materialId);
+    if (existing != level.materialIds.end()) {
+      result.push_back(static_cast<uint32_t>(existing - level.materialIds.begin()));
+      continue;
+    }
+    if (level.materials.size() >= kMaxMaterials) {
+      reader.failValue(entityPointer, "the glTF materials of mesh \"" + meshId +
+                                          "\" make more than " + std::to_string(kMaxMaterials) +
+                                          " materials, the limit");
+    }
+    GltfMaterial& source = materialSource.gltfMaterials[k];
+    scene::MaterialDesc desc;
+    desc.baseColor = source.baseColor;
+    desc.specular = source.specular;
+    desc.roughness = source.roughness;
+    desc.emissive = source.emissive;
+    const std::string meshPointer = childPointer("/meshes", meshId);
+    if (source.colorTexture) {
+      desc.colorTexture =
+          reader.addModelTexture(std::move(*source.colorTexture), meshPointer, level);
+      source.colorTexture.reset();
+    }
+    if (source.normalTexture) {
+      desc.normalTexture =
+          reader.addModelTexture(std::move(*source.normalTexture), meshPointer, level);
+      source.normalTexture.reset();
+    }
+    level.materialIds.push_back(materialId);
+    level.materials.push_back(desc);
+    result.push_back(static_cast<uint32_t>(level.materials.size() - 1));
   }
-  if (level.materials.size() >= kMaxMaterials) {
-    reader.failValue(entityPointer, "the glTF material of mesh \"" + meshId +
-                                        "\" makes more than " + std::to_string(kMaxMaterials) +
-                                        " materials, the limit");
-  }
-  GltfMaterial& source = *materialSource.gltfMaterial;
-  scene::MaterialDesc desc;
-  desc.baseColor = source.baseColor;
-  desc.specular = source.specular;
-  desc.roughness = source.roughness;
-  desc.emissive = source.emissive;
-  const std::string meshPointer = childPointer("/meshes", meshId);
-  if (source.colorTexture) {
-    desc.colorTexture = reader.addModelTexture(std::move(*source.colorTexture), meshPointer, level);
-  }
-  if (source.normalTexture) {
-    desc.normalTexture =
-        reader.addModelTexture(std::move(*source.normalTexture), meshPointer, level);
-  }
-  level.materialIds.push_back(materialId);
-  level.materials.push_back(desc);
-  return static_cast<uint32_t>(level.materials.size() - 1);
+  return result;
 }
 
 Mover readMover(const LevelReader& reader, const OrderedJson& mover, const std::string& pointer,
@@ -159,7 +168,9 @@ Entity readEntity(LevelReader& reader, const std::string& id, const OrderedJson&
     result.material = reader.readReference(entity["material"], childPointer(pointer, "material"),
                                            IdKind::Material);
   } else {
-    result.material = modelMaterial(reader, result.mesh, pointer, level);
+    result.meshMaterials = modelMaterials(reader, result.mesh, pointer, level);
+    result.material = result.meshMaterials.front();
+    if (result.meshMaterials.size() == 1) result.meshMaterials.clear();
   }
   if (entity.contains("position")) {
     result.position =

@@ -137,7 +137,7 @@ class LevelReader : public JsonReader {
   // brought, if any, for entities that name no material of their own.
   struct MeshMaterialSource {
     bool isGltf = false;
-    std::optional<GltfMaterial> gltfMaterial;
+    std::vector<GltfMaterial> gltfMaterials;  // the model's own, per mesh material
   };
   std::vector<MeshMaterialSource> meshMaterialSources;
 

@@ -35,7 +35,9 @@ scene::MeshData readGltf(LevelReader& reader, const OrderedJson& mesh, const std
   reader.addSourceFile(level, file.path);
   for (const std::filesystem::path& read : model.filesRead) reader.addSourceFile(level, read);
   level.warnings.insert(level.warnings.end(), model.warnings.begin(), model.warnings.end());
-  reader.meshMaterialSources.back().gltfMaterial = std::move(model.material);
+  std::vector<std::string>& names = level.meshMaterialNames.back();
+  for (const GltfMaterial& material : model.materials) names.push_back(material.name);
+  reader.meshMaterialSources.back().gltfMaterials = std::move(model.materials);
   return std::move(model.mesh);
 }
 
@@ -64,7 +66,7 @@ scene::MeshData readMesh(LevelReader& reader, const OrderedJson& mesh, const std
     }
   }
   // Parallel to level.meshes; the material is filled in for glTF models that bring one.
-  reader.meshMaterialSources.push_back({shape == "gltf", std::nullopt});
+  reader.meshMaterialSources.push_back({shape == "gltf", {}});
   const OrderedJson& params = mesh[shape];
   const std::string paramsPointer = childPointer(pointer, shape);
   if (shape == "box") {
