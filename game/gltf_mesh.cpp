@@ -9,6 +9,7 @@
 #include "game/gltf_file_access.hpp"
 #include "game/gltf_material.hpp"
 #include "game/gltf_mesh_assembler.hpp"
+#include "game/gltf_unsupported.hpp"
 #include "game/json_reader.hpp"
 
 namespace game {
@@ -108,6 +109,7 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
   if (!loaded) fail(file, "cannot load glTF: " + readableLoadError(loadError));
 
   GltfModel result;
+  gltf::checkUnsupportedFeatures(model, file, result.warnings);
   gltf::MeshAssembler assembler(model, file);
   std::string meshName = file.stem().string();
   if (!selection.mesh.empty()) {

@@ -18,51 +18,28 @@
 #include "game/gltf_mesh.hpp"
 #include "game/level_loader.hpp"
 #include "game/primitives.hpp"
+#include "gltf_builder.hpp"
 #include "temp_dir_fixture.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using test::base64;
+using test::GltfBuilder;
+using test::kFloat;
+using test::kUnsignedByte;
+using test::kUnsignedShort;
+using test::packed;
+using test::packedVec3s;
 
 const fs::path kAssets = fs::path(SIGHTLINE_SOURCE_DIR) / "assets";
-
-constexpr int kFloat = 5126, kUnsignedByte = 5121, kUnsignedShort = 5123;
 
 using test::writeFile;
 
 std::string readFile(const fs::path& path) {
   std::ifstream stream(path, std::ios::binary);
   return {std::istreambuf_iterator<char>(stream), std::istreambuf_iterator<char>()};
-}
-
-std::string base64(const std::string& bytes) {
-  static const char* const alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string encoded;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    uint32_t group = static_cast<uint32_t>(static_cast<unsigned char>(bytes[i])) << 16;
-    if (i + 1 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    if (i + 2 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 2]);
-    encoded += alphabet[(group >> 18) & 63];
-    encoded += alphabet[(group >> 12) & 63];
-    encoded += i + 1 < bytes.size() ? alphabet[(group >> 6) & 63] : '=';
-    encoded += i + 2 < bytes.size() ? alphabet[group & 63] : '=';
-  }
-  return encoded;
-}
-
-template <typename T>
-std::string packed(const std::vector<T>& values) {
-  std::string bytes(values.size() * sizeof(T), '\0');
-  std::memcpy(bytes.data(), values.data(), bytes.size());  // little-endian, as glTF
-  return bytes;
-}
-
-std::string packedVec3s(const std::vector<glm::vec3>& points) {
-  std::vector<float> floats;
-  for (const glm::vec3& p : points) floats.insert(floats.end(), {p.x, p.y, p.z});
-  return packed(floats);
 }
 
 // A 2x1 RGB PNG, red then green.
@@ -78,59 +55,6 @@ std::string tinyPng() {
   EXPECT_FALSE(png.empty());
   return png;
 }
-
-// Builds a glTF document with one binary buffer, one buffer view per accessor.
-struct GltfBuilder {
-  json document = {{"asset", {{"version", "2.0"}}},
-                   {"bufferViews", json::array()},
-                   {"accessors", json::array()}};
-  std::string buffer;
-
-  int addView(const std::string& bytes) {
-    buffer.resize((buffer.size() + 3) / 4 * 4, '\0');  // keep every view 4-byte aligned
-    document["bufferViews"].push_back(
-        {{"buffer", 0}, {"byteOffset", buffer.size()}, {"byteLength", bytes.size()}});
-    buffer += bytes;
-    return static_cast<int>(document["bufferViews"].size()) - 1;
-  }
-
-  int addAccessor(const std::string& bytes, int componentType, std::size_t count,
-                  const std::string& type, bool normalized = false) {
-    json accessor = {{"bufferView", addView(bytes)},
-                     {"componentType", componentType},
-                     {"count", count},
-                     {"type", type}};
-    if (normalized) accessor["normalized"] = true;
-    document["accessors"].push_back(accessor);
-    return static_cast<int>(document["accessors"].size()) - 1;
-  }
-
-  // A primitive with positions (and u16 indices unless `indices` is empty); returns it so
-  // tests can add attributes or a material.
-  json primitive(const std::vector<glm::vec3>& positions,
-                 const std::vector<uint16_t>& indices = {}) {
-    json result = {
-        {"attributes",
-         {{"POSITION", addAccessor(packedVec3s(positions), kFloat, positions.size(), "VEC3")}}}};
-    if (!indices.empty()) {
-      result["indices"] = addAccessor(packed(indices), kUnsignedShort, indices.size(), "SCALAR");
-    }
-    return result;
-  }
-
-  // A vector, not json: a braced single json would be copied rather than wrapped in an array.
-  int addMesh(const std::string& name, const std::vector<json>& primitives) {
-    document["meshes"].push_back({{"name", name}, {"primitives", primitives}});
-    return static_cast<int>(document["meshes"].size()) - 1;
-  }
-
-  // Writes `path` with the buffer embedded as a data URI.
-  void write(const fs::path& path) {
-    document["buffers"] = {{{"byteLength", buffer.size()},
-                            {"uri", "data:application/octet-stream;base64," + base64(buffer)}}};
-    writeFile(path, document.dump(1));
-  }
-};
 
 const std::vector<glm::vec3> kTriangle = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
@@ -439,6 +363,39 @@ TEST_F(GltfModelTest, every_primitive_keeps_its_material_in_order_of_first_use) 
   EXPECT_EQ(model.materials[1].name, "plain");
   EXPECT_EQ(model.materials[1].baseColor, glm::vec3(1.0f));
   EXPECT_EQ(model.materials[2].name, "default");
+}
+
+TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_extension_fails) {
+  GltfBuilder gltf;
+  json primitive = gltf.primitive(kTriangle);
+  primitive["attributes"]["COLOR_0"] =
+      gltf.addAccessor(packed(std::vector<float>(12, 1.0f)), kFloat, 3, "VEC4");
+  primitive["targets"] = {
+      {{"POSITION", gltf.addAccessor(packedVec3s(kTriangle), kFloat, 3, "VEC3")}}};
+  primitive["material"] = 0;
+  gltf.addMesh("tri", {primitive});
+  gltf.document["materials"] = {{{"name", "leaf"}, {"alphaMode", "MASK"}}};
+  gltf.document["cameras"] = {
+      {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}};
+  gltf.document["extensionsUsed"] = {"KHR_materials_clearcoat", "EXT_fancy"};
+  gltf.write(root_ / "extras.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "extras.gltf", root_);
+  const std::string file = (root_ / "extras.gltf").string() + ": ";
+  EXPECT_EQ(model.warnings,
+            (std::vector<std::string>{
+                file + "uses the extensions EXT_fancy, KHR_materials_clearcoat, which Sightline "
+                       "does not support: ignored",
+                file + "has 1 camera: ignored (the level's camera is used)",
+                file + "has morph targets: not supported; drawn without them",
+                file + "has vertex colours (COLOR_0): not supported; ignored",
+                file + "material \"leaf\" has alphaMode MASK: not supported; drawn opaque"}));
+
+  gltf.document["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+  gltf.write(root_ / "draco.gltf");
+  EXPECT_EQ(loadError(root_ / "draco.gltf"),
+            (root_ / "draco.gltf").string() +
+                ": requires the extension KHR_draco_mesh_compression, which Sightline cannot "
+                "honour (it supports no glTF extensions)");
 }
 
 // A one-triangle model whose material uses image 0 as its base colour texture.

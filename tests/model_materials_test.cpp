@@ -1,6 +1,5 @@
 // A glTF model of several materials renders each primitive in its own (docs/LEVELS.md, "glTF
 // models"), unless the entity names one material for all of it.
-#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -11,61 +10,31 @@
 #include <gtest/gtest.h>
 
 #include "game/level_loader.hpp"
+#include "gltf_builder.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string base64(const std::string& bytes) {
-  static const char* const kDigits =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string text;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t count = std::min<std::size_t>(3, bytes.size() - i);
-    uint32_t group = uint32_t(uint8_t(bytes[i])) << 16;
-    if (count > 1) group |= uint32_t(uint8_t(bytes[i + 1])) << 8;
-    if (count > 2) group |= uint32_t(uint8_t(bytes[i + 2]));
-    text += kDigits[(group >> 18) & 63];
-    text += kDigits[(group >> 12) & 63];
-    text += count > 1 ? kDigits[(group >> 6) & 63] : '=';
-    text += count > 2 ? kDigits[group & 63] : '=';
-  }
-  return text;
-}
-
-template <typename T>
-std::string bytesOf(const std::vector<T>& values) {
-  return std::string(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(T));
-}
-
 // Two unit quads facing +Z side by side, x in [-1, 0] and [0, 1]: primitive 0 with material
 // "red", primitive 1 with "green", both in one mesh.
-std::string twoMaterialModel() {
-  const std::vector<float> left = {-1, -0.5f, 0, 0, -0.5f, 0, 0, 0.5f, 0, -1, 0.5f, 0};
-  const std::vector<float> right = {0, -0.5f, 0, 1, -0.5f, 0, 1, 0.5f, 0, 0, 0.5f, 0};
-  const std::vector<uint16_t> indices = {0, 1, 2, 0, 2, 3};
-  const std::string buffer = bytesOf(left) + bytesOf(right) + bytesOf(indices);
-  const std::string views = R"([
-    {"buffer": 0, "byteOffset": 0, "byteLength": 48},
-    {"buffer": 0, "byteOffset": 48, "byteLength": 48},
-    {"buffer": 0, "byteOffset": 96, "byteLength": 12}])";
-  const std::string accessors = R"([
-    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [-1, -0.5, 0], "max": [0, 0.5, 0]},
-    {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, -0.5, 0], "max": [1, 0.5, 0]},
-    {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}])";
-  return R"({"asset": {"version": "2.0"},
-    "buffers": [{"byteLength": )" +
-         std::to_string(buffer.size()) + R"(, "uri": "data:application/octet-stream;base64,)" +
-         base64(buffer) + R"("}],
-    "bufferViews": )" +
-         views + R"(, "accessors": )" + accessors + R"(,
-    "materials": [
-      {"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1], "metallicFactor": 0}},
-      {"name": "green", "pbrMetallicRoughness": {"baseColorFactor": [0, 1, 0, 1], "metallicFactor": 0}}],
-    "meshes": [{"name": "pair", "primitives": [
-      {"attributes": {"POSITION": 0}, "indices": 2, "material": 0},
-      {"attributes": {"POSITION": 1}, "indices": 2, "material": 1}]}]})";
+void writeTwoMaterialModel(const fs::path& path) {
+  test::GltfBuilder gltf;
+  const std::vector<uint16_t> quad = {0, 1, 2, 0, 2, 3};
+  nlohmann::json left =
+      gltf.primitive({{-1, -0.5f, 0}, {0, -0.5f, 0}, {0, 0.5f, 0}, {-1, 0.5f, 0}}, quad);
+  left["material"] = 0;
+  nlohmann::json right =
+      gltf.primitive({{0, -0.5f, 0}, {1, -0.5f, 0}, {1, 0.5f, 0}, {0, 0.5f, 0}}, quad);
+  right["material"] = 1;
+  gltf.addMesh("pair", {left, right});
+  gltf.document["materials"] = {
+      {{"name", "red"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}, {"metallicFactor", 0}}}},
+      {{"name", "green"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {0, 1, 0, 1}}, {"metallicFactor", 0}}}}};
+  gltf.write(path);
 }
 
 class ModelMaterialsTest : public test::VulkanTest {
@@ -74,7 +43,7 @@ class ModelMaterialsTest : public test::VulkanTest {
     root_ = fs::temp_directory_path() /
             ("sightline-model-materials-" + std::to_string(std::random_device{}()));
     fs::create_directories(root_);
-    std::ofstream(root_ / "pair.gltf") << twoMaterialModel();
+    writeTwoMaterialModel(root_ / "pair.gltf");
   }
   void TearDown() override {
     std::error_code ignored;

@@ -1,0 +1,70 @@
+#include "game/gltf_unsupported.hpp"
+
+#include <set>
+
+#include "game/gltf_checks.hpp"
+
+namespace game::gltf {
+
+namespace {
+
+std::string counted(std::size_t count, const std::string& what) {
+  return std::to_string(count) + " " + what + (count == 1 ? "" : "s");
+}
+
+std::string joined(const std::set<std::string>& names) {
+  std::string text;
+  for (const std::string& name : names) text += (text.empty() ? "" : ", ") + name;
+  return text;
+}
+
+std::string materialLabel(const tinygltf::Material& material, std::size_t index) {
+  return material.name.empty() ? "material " + std::to_string(index)
+                               : "material \"" + material.name + "\"";
+}
+
+}  // namespace
+
+void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesystem::path& file,
+                              std::vector<std::string>& warnings) {
+  if (!model.extensionsRequired.empty()) {
+    fail(file, "requires the extension " + model.extensionsRequired.front() +
+                   ", which Sightline cannot honour (it supports no glTF extensions)");
+  }
+  auto warn = [&](const std::string& text) { warnings.push_back(file.string() + ": " + text); };
+  if (!model.extensionsUsed.empty()) {
+    const std::set<std::string> used(model.extensionsUsed.begin(), model.extensionsUsed.end());
+    warn("uses " + std::string(used.size() == 1 ? "the extension " : "the extensions ") +
+         joined(used) + ", which Sightline does not support: ignored");
+  }
+  if (!model.skins.empty())
+    warn("has " + counted(model.skins.size(), "skin") +
+         ": skinning is not supported; the meshes are drawn in their bind pose");
+  if (!model.animations.empty())
+    warn("has " + counted(model.animations.size(), "animation") +
+         ": not supported; the model is drawn as it stands (give the entity a mover instead)");
+  if (!model.cameras.empty())
+    warn("has " + counted(model.cameras.size(), "camera") +
+         ": ignored (the level's camera is used)");
+  bool morphTargets = false, vertexColours = false;
+  for (const tinygltf::Mesh& mesh : model.meshes) {
+    for (const tinygltf::Primitive& primitive : mesh.primitives) {
+      morphTargets = morphTargets || !primitive.targets.empty();
+      vertexColours = vertexColours || primitive.attributes.count("COLOR_0") > 0;
+    }
+  }
+  if (morphTargets) warn("has morph targets: not supported; drawn without them");
+  if (vertexColours) warn("has vertex colours (COLOR_0): not supported; ignored");
+  for (std::size_t i = 0; i < model.materials.size(); ++i) {
+    const tinygltf::Material& material = model.materials[i];
+    const std::string label = materialLabel(material, i);
+    if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE")
+      warn(label + " has alphaMode " + material.alphaMode + ": not supported; drawn opaque");
+    if (material.occlusionTexture.index >= 0)
+      warn(label + " has an occlusionTexture: not supported; ignored");
+    if (material.emissiveTexture.index >= 0)
+      warn(label + " has an emissiveTexture: not supported; its emissiveFactor is used alone");
+  }
+}
+
+}  // namespace game::gltf
