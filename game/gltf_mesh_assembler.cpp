@@ -161,6 +161,13 @@ void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
     expectOnePerPosition(uvs.size(), positions.size(), label, "UVs");
   }
 
+  std::vector<glm::vec4> colors;
+  if (const auto colorAttribute = primitive.attributes.find("COLOR_0");
+      colorAttribute != primitive.attributes.end()) {
+    colors = readColors(colorAttribute->second, label + " COLOR_0");
+    expectOnePerPosition(colors.size(), positions.size(), label, "colours");
+  }
+
   std::vector<uint32_t> indices = primitive.indices >= 0
                                       ? readIndices(primitive.indices, label + " indices")
                                       : sequentialIndices(positions.size(), label);
@@ -189,6 +196,7 @@ void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
       vertices[i].normal = normalizedOrUp(glm::vec3(normalTransform * glm::dvec3(normals[i])));
     }
     if (!uvs.empty()) vertices[i].uv = uvs[i];
+    if (!colors.empty()) vertices[i].color = colors[i];
   }
 
   // Zero-area triangles have no normal and can never be hit; they only cost time.
@@ -344,6 +352,47 @@ std::vector<glm::vec2> MeshAssembler::readUvs(int accessorIndex, const std::stri
         values[i] = glm::vec2(pair[0], pair[1]) / 65535.0f;
         break;
       }
+    }
+  }
+  return values;
+}
+
+// COLOR_0: RGB or RGBA, floats or normalized unsigned bytes or shorts; linear, alpha 1 when
+// absent.
+std::vector<glm::vec4> MeshAssembler::readColors(int accessorIndex,
+                                                 const std::string& label) const {
+  const tinygltf::Accessor* accessor = accessorAt(accessorIndex);
+  int components = 4;
+  if (accessor) {
+    const int type = accessor->componentType;
+    const bool normalizedInteger =
+        accessor->normalized && (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                 type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    if ((accessor->type != TINYGLTF_TYPE_VEC3 && accessor->type != TINYGLTF_TYPE_VEC4) ||
+        (type != TINYGLTF_COMPONENT_TYPE_FLOAT && !normalizedInteger)) {
+      fail(file_, label + " (accessor " + std::to_string(accessorIndex) +
+                      ") must hold VEC3 or VEC4 floats or normalized unsigned bytes or shorts");
+    }
+    components = accessor->type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+  }
+  const AccessorBytes bytes = locate(accessorIndex, label);
+  std::vector<glm::vec4> values(bytes.count, glm::vec4(1.0f));
+  for (std::size_t i = 0; i < bytes.count; ++i) {
+    const unsigned char* element = bytes.element(i);
+    for (int c = 0; c < components; ++c) {
+      float value = 0.0f;
+      if (bytes.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        std::memcpy(&value, element + 4 * c, sizeof value);
+        if (!std::isfinite(value))
+          fail(file_, label + " holds a value that is not a finite number");
+      } else if (bytes.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+        value = float(element[c]) / 255.0f;
+      } else {
+        uint16_t component = 0;
+        std::memcpy(&component, element + 2 * c, sizeof component);
+        value = float(component) / 65535.0f;
+      }
+      values[i][c] = std::clamp(value, 0.0f, 1.0f);
     }
   }
   return values;

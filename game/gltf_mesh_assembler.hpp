@@ -44,6 +44,7 @@ class MeshAssembler {
   const tinygltf::Accessor* accessorAt(int accessorIndex) const;
   std::vector<glm::vec3> readVec3s(int accessorIndex, const std::string& label) const;
   std::vector<glm::vec2> readUvs(int accessorIndex, const std::string& label) const;
+  std::vector<glm::vec4> readColors(int accessorIndex, const std::string& label) const;
   std::vector<uint32_t> readIndices(int accessorIndex, const std::string& label) const;
 
   const tinygltf::Model& model_;

@@ -46,15 +46,13 @@ void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesyste
   if (!model.cameras.empty())
     warn("has " + counted(model.cameras.size(), "camera") +
          ": ignored (the level's camera is used)");
-  bool morphTargets = false, vertexColours = false;
+  bool morphTargets = false;
   for (const tinygltf::Mesh& mesh : model.meshes) {
     for (const tinygltf::Primitive& primitive : mesh.primitives) {
       morphTargets = morphTargets || !primitive.targets.empty();
-      vertexColours = vertexColours || primitive.attributes.count("COLOR_0") > 0;
     }
   }
   if (morphTargets) warn("has morph targets: not supported; drawn without them");
-  if (vertexColours) warn("has vertex colours (COLOR_0): not supported; ignored");
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& material = model.materials[i];
     const std::string label = materialLabel(material, i);

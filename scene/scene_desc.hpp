@@ -11,7 +11,8 @@ namespace scene {
 struct Vertex {
   glm::vec3 position{0.0f};
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
-  glm::vec2 uv{0.0f};  // texture coordinates; (0, 0) top-left of the image, as in glTF
+  glm::vec2 uv{0.0f};     // texture coordinates; (0, 0) top-left of the image, as in glTF
+  glm::vec4 color{1.0f};  // linear, multiplies the material's base colour (glTF COLOR_0)
 };
 
 // A decoded texture, RGBA8, rows top to bottom.

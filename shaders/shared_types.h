@@ -76,8 +76,8 @@ using uint = uint32_t;
 #define TONEMAP_IDENTITY 0u
 #define TONEMAP_ACES 1u
 
-// Floats per vertex in the vertex buffer: position xyz, normal xyz, uv.
-#define VERTEX_FLOATS 8
+// Floats per vertex in the vertex buffer: position xyz, normal xyz, uv, colour rgba.
+#define VERTEX_FLOATS 12
 
 struct FrameUniforms {
   vec4 cameraPosition;          // xyz: the camera in render space (world minus camera): 0

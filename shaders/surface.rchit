@@ -15,6 +15,11 @@ vec3 fetchVec3(uint vertex, uint component) {
   return vec3(vertexFloats[base], vertexFloats[base + 1u], vertexFloats[base + 2u]);
 }
 
+vec3 fetchColor(uint vertex) {
+  uint base = vertex * VERTEX_FLOATS + 8u;
+  return vec3(vertexFloats[base], vertexFloats[base + 1u], vertexFloats[base + 2u]);
+}
+
 vec2 fetchUv(uint vertex) {
   uint base = vertex * VERTEX_FLOATS + 6u;
   return vec2(vertexFloats[base], vertexFloats[base + 1u]);
@@ -64,7 +69,9 @@ void main() {
     objectShading = applyNormalMap(objectShading, p0, p1, p2, uv0, uv1, uv2, uv,
                                    material.kindTextures.z - 1u);
   }
-  vec3 albedo = material.baseColorSpecular.rgb;
+  // Vertex colours (white unless a glTF model gave COLOR_0) multiply the base colour.
+  vec3 albedo = material.baseColorSpecular.rgb *
+                (fetchColor(v0) * weights.x + fetchColor(v1) * weights.y + fetchColor(v2) * weights.z);
   if (material.kindTextures.y > 0u) {
     albedo *= textureLod(textures[nonuniformEXT(material.kindTextures.y - 1u)], uv, 0.0).rgb;
   }

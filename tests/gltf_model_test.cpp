@@ -387,7 +387,6 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
                        "does not support: ignored",
                 file + "has 1 camera: ignored (the level's camera is used)",
                 file + "has morph targets: not supported; drawn without them",
-                file + "has vertex colours (COLOR_0): not supported; ignored",
                 file + "material \"leaf\" has alphaMode MASK: not supported; drawn opaque"}));
 
   gltf.document["extensionsRequired"] = {"KHR_draco_mesh_compression"};

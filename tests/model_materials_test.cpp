@@ -37,6 +37,22 @@ void writeTwoMaterialModel(const fs::path& path) {
   gltf.write(path);
 }
 
+// One quad across the view, white, with vertex colours (normalized bytes) of orange.
+void writeOrangeVertexColourModel(const fs::path& path) {
+  test::GltfBuilder gltf;
+  nlohmann::json quad = gltf.primitive({{-1, -0.5f, 0}, {1, -0.5f, 0}, {1, 0.5f, 0}, {-1, 0.5f, 0}},
+                                       {0, 1, 2, 0, 2, 3});
+  const std::vector<uint8_t> orange = {255, 128, 0, 255, 128, 0, 255, 128, 0, 255, 128, 0};
+  quad["attributes"]["COLOR_0"] =
+      gltf.addAccessor(test::packed(orange), test::kUnsignedByte, 4, "VEC3", true);
+  quad["material"] = 0;
+  gltf.addMesh("pair", {quad});
+  gltf.document["materials"] = {
+      {{"name", "white"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {1, 1, 1, 1}}, {"metallicFactor", 0}}}}};
+  gltf.write(path);
+}
+
 class ModelMaterialsTest : public test::VulkanTest {
  protected:
   void SetUp() override {
@@ -88,6 +104,22 @@ TEST_F(ModelMaterialsTest, each_primitive_renders_in_its_own_material) {
   const size_t left = (8 * 32 + 12) * 4, right = (8 * 32 + 19) * 4;
   EXPECT_EQ(grey.pixels[left], grey.pixels[right]);
   EXPECT_EQ(grey.pixels[left], grey.pixels[left + 1]);
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(ModelMaterialsTest, vertex_colours_multiply_the_base_colour) {
+  writeOrangeVertexColourModel(root_ / "pair.gltf");
+  const render::Rgba8Image image = render("");
+  const size_t centre = (8 * 32 + 16) * 4;
+  // White times linear (1, 0.502, 0): red brightest, green about half in linear light, blue
+  // only from the 4 % white highlight of glTF's dielectric specular.
+  EXPECT_GT(image.pixels[centre], 120);
+  EXPECT_GT(image.pixels[centre], image.pixels[centre + 1] + 20);
+  EXPECT_GT(image.pixels[centre + 1], 40);
+  EXPECT_LT(image.pixels[centre + 2], 40);
 }
 
 }  // namespace
