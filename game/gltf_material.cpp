@@ -31,7 +31,7 @@ class MaterialMapper {
         material.name.empty() ? "material " + std::to_string(materialIndex) : material.name;
     result.baseColor = factors<3>(pbr.baseColorFactor, "baseColorFactor", result.baseColor);
     result.roughness = factor(pbr.roughnessFactor, "roughnessFactor");
-    result.specular = 0.04f + 0.96f * factor(pbr.metallicFactor, "metallicFactor");
+    result.metallic = factor(pbr.metallicFactor, "metallicFactor");
     result.emissive = factors<3>(material.emissiveFactor, "emissiveFactor", result.emissive);
     if (pbr.baseColorTexture.index >= 0) {
       result.colorTexture =

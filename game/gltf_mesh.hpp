@@ -15,7 +15,7 @@ namespace game {
 struct GltfMaterial {
   std::string name;           // the glTF material's name, or "material N", or "default"
   glm::vec3 baseColor{1.0f};  // linear (glTF factors are linear)
-  float specular = 0.04f;     // 0.04 + 0.96 * metallic
+  float metallic = 1.0f;      // glTF's default metallicFactor
   float roughness = 1.0f;
   glm::vec3 emissive{0.0f};                         // linear
   std::optional<scene::TextureDesc> colorTexture;   // srgb = true

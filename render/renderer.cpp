@@ -133,10 +133,12 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   for (const scene::MaterialDesc& material : scene.materials) {
     gpuMaterials.push_back(
         {glm::vec4(material.baseColor, material.specular),
-         glm::vec4(material.emissive, material.roughness), glm::vec4(material.mirrorTint, 0.0f),
-         glm::vec4(material.glassTint, 0.0f),
-         glm::uvec4(static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
-                    textureSlot(material.normalTexture), 0u)});
+         glm::vec4(material.emissive, material.roughness),
+         glm::vec4(material.mirrorTint, material.metallic), glm::vec4(material.glassTint, 0.0f),
+         glm::uvec4(
+             static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
+             textureSlot(material.normalTexture),
+             material.metallicRoughness ? SHADING_METALLIC_ROUGHNESS : SHADING_BLINN_PHONG)});
   }
   for (const scene::LightDesc& light : scene.lights) {
     gpuLights_.push_back(toGpuLight(light));

@@ -42,9 +42,13 @@ enum class MaterialKind : uint32_t {
 // Colours are linear (already converted from the sRGB the author wrote).
 struct MaterialDesc {
   MaterialKind kind = MaterialKind::Diffuse;
-  glm::vec3 baseColor{0.8f};   // diffuse albedo
-  float specular = 0.0f;       // Blinn-Phong lobe weight in [0, 1]
-  float roughness = 0.5f;      // (0, 1]; mapped to the Blinn-Phong exponent 2/r^4 - 2
+  glm::vec3 baseColor{0.8f};  // diffuse albedo
+  float specular = 0.0f;      // Blinn-Phong lobe weight in [0, 1]
+  float roughness = 0.5f;     // (0, 1]; Blinn-Phong exponent 2/r^4 - 2, or GGX alpha = r^2
+  // glTF's metallic-roughness model (GGX, Smith visibility, Schlick Fresnel) instead of
+  // Blinn-Phong: F0 = mix(0.04, baseColor, metallic), diffuse baseColor (1 - metallic) / pi.
+  bool metallicRoughness = false;
+  float metallic = 0.0f;       // [0, 1]
   glm::vec3 emissive{0.0f};    // emitted radiance, added unlit
   glm::vec3 mirrorTint{1.0f};  // Mirror: reflectance times tint, linear
   glm::vec3 glassTint{1.0f};   // Glass: linear transmittance per front face

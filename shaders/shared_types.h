@@ -56,6 +56,9 @@ using uint = uint32_t;
 #define MATERIAL_MIRROR 1u
 #define MATERIAL_GLASS 2u
 
+#define SHADING_BLINN_PHONG 0u         // Lambert plus an energy-normalised Blinn-Phong lobe
+#define SHADING_METALLIC_ROUGHNESS 1u  // glTF 2.0's BRDF (appendix B)
+
 // Instance mask bits. Surface rays see opaque instances, shadow rays opaque shadow casters;
 // glass is only seen by the glass rays that collect its tint.
 #define MASK_VISIBLE 0x01u
@@ -113,9 +116,10 @@ struct GpuInstance {
 struct GpuMaterial {
   vec4 baseColorSpecular;  // rgb: linear albedo, a: specular weight
   vec4 emissiveRoughness;  // rgb: linear emitted radiance, a: roughness
-  vec4 mirrorTint;         // rgb: reflectance times tint (MATERIAL_MIRROR)
+  vec4 mirrorTint;         // rgb: reflectance times tint (MATERIAL_MIRROR); a: metallic
   vec4 glassTint;          // rgb: transmittance per front face (MATERIAL_GLASS)
-  uvec4 kindTextures;      // x: MATERIAL_*, y: colour texture + 1, z: normal map + 1 (0: none)
+  // x: MATERIAL_*, y: colour texture + 1, z: normal map + 1 (0: none), w: SHADING_*
+  uvec4 kindTextures;
 };
 
 struct GpuLight {

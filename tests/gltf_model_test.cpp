@@ -106,7 +106,7 @@ TEST(GltfCrate, material_factors_and_textures_are_mapped) {
   EXPECT_FLOAT_EQ(material.baseColor.g, 0.85f);
   EXPECT_FLOAT_EQ(material.baseColor.b, 0.8f);
   EXPECT_FLOAT_EQ(material.roughness, 0.75f);
-  EXPECT_FLOAT_EQ(material.specular, 0.04f);  // metallicFactor 0
+  EXPECT_FLOAT_EQ(material.metallic, 0.0f);
   EXPECT_EQ(material.emissive, glm::vec3(0.0f));
 
   ASSERT_TRUE(material.colorTexture.has_value());
@@ -355,7 +355,7 @@ TEST_F(GltfModelTest, every_primitive_keeps_its_material_in_order_of_first_use) 
   const game::GltfMaterial& shiny = model.materials[0];
   EXPECT_EQ(shiny.name, "shiny");
   EXPECT_EQ(shiny.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
-  EXPECT_FLOAT_EQ(shiny.specular, 0.04f + 0.96f * 0.5f);
+  EXPECT_FLOAT_EQ(shiny.metallic, 0.5f);
   EXPECT_FLOAT_EQ(shiny.roughness, 1.0f);  // glTF's default roughnessFactor
   EXPECT_EQ(shiny.emissive, glm::vec3(0.25f, 0.5f, 1.0f));
   EXPECT_FALSE(shiny.colorTexture.has_value());

@@ -800,10 +800,11 @@ TEST(LevelErrors, unknown_key_suggests_the_nearest_allowed_key) {
 TEST(LevelErrors, unknown_key_without_a_near_miss_lists_the_allowed_keys) {
   const std::string text =
       replaced(kMinimalLevel, R"({"color": [0.5, 0.5, 0.5]})", R"({"paint": [0.5, 0.5, 0.5]})");
-  EXPECT_EQ(parseError(text),
-            "levels/test.json:5:26: /materials/grey: unknown key \"paint\"; allowed keys: "
-            "\"color\", \"specular\", \"roughness\", \"emissive\", \"emissive_strength\", "
-            "\"texture\", \"normal_map\", \"mirror\", \"glass\"");
+  EXPECT_EQ(
+      parseError(text),
+      "levels/test.json:5:26: /materials/grey: unknown key \"paint\"; allowed keys: "
+      "\"color\", \"specular\", \"metallic\", \"roughness\", \"emissive\", \"emissive_strength\", "
+      "\"texture\", \"normal_map\", \"mirror\", \"glass\"");
   EXPECT_EQ(parseError(replaced(kMinimalLevel, R"("name": "Test")", R"("Name": "Test")")),
             "levels/test.json:3:3: unknown key \"Name\"; did you mean \"name\"?");
 }
@@ -1330,7 +1331,8 @@ TEST_F(TempDirTest, gltf_material_textures_and_source_files) {
   const scene::MaterialDesc& wood = level.materials[3];
   EXPECT_EQ(wood.kind, scene::MaterialKind::Diffuse);
   EXPECT_EQ(wood.baseColor, glm::vec3(0.9f, 0.85f, 0.8f));  // glTF factors are linear already
-  EXPECT_FLOAT_EQ(wood.specular, 0.04f);                    // metallic 0
+  EXPECT_TRUE(wood.metallicRoughness);                      // glTF's own shading model
+  EXPECT_FLOAT_EQ(wood.metallic, 0.0f);
   EXPECT_FLOAT_EQ(wood.roughness, 0.75f);
   EXPECT_EQ(wood.colorTexture, 0);
   EXPECT_EQ(wood.normalTexture, 1);

@@ -37,7 +37,8 @@ std::vector<uint32_t> modelMaterials(LevelReader& reader, uint32_t mesh,
     GltfMaterial& source = materialSource.gltfMaterials[k];
     scene::MaterialDesc desc;
     desc.baseColor = source.baseColor;
-    desc.specular = source.specular;
+    desc.metallicRoughness = true;
+    desc.metallic = source.metallic;
     desc.roughness = source.roughness;
     desc.emissive = source.emissive;
     const std::string meshPointer = childPointer("/meshes", meshId);

@@ -6,13 +6,22 @@ namespace game::level_format {
 scene::MaterialDesc readMaterial(LevelReader& reader, const OrderedJson& material,
                                  const std::string& pointer, Level& level) {
   reader.checkKeys(material, pointer,
-                   {"color", "specular", "roughness", "emissive", "emissive_strength", "texture",
-                    "normal_map", "mirror", "glass"},
+                   {"color", "specular", "metallic", "roughness", "emissive", "emissive_strength",
+                    "texture", "normal_map", "mirror", "glass"},
                    {});
   scene::MaterialDesc desc;
   desc.baseColor = reader.readOptionalColor(material, "color", pointer, glm::vec3(1.0f));
   desc.specular = reader.readOptionalNumber(material, "specular", pointer, kUnitInterval, 0.0f);
   desc.roughness = reader.readOptionalNumber(material, "roughness", pointer, kUnitFraction, 0.5f);
+  if (material.contains("metallic")) {
+    if (material.contains("specular")) {
+      reader.failKey(pointer, "specular",
+                     "a material is shaded by \"metallic\" (glTF's metallic-roughness model) or "
+                     "by \"specular\" (Blinn-Phong), not both; remove one");
+    }
+    desc.metallicRoughness = true;
+    desc.metallic = reader.readOptionalNumber(material, "metallic", pointer, kUnitInterval, 0.0f);
+  }
   const glm::vec3 emissive =
       reader.readOptionalColor(material, "emissive", pointer, glm::vec3(0.0f));
   desc.emissive = emissive * reader.readOptionalNumber(material, "emissive_strength", pointer,
