@@ -33,6 +33,20 @@ class MaterialMapper {
     result.roughness = factor(pbr.roughnessFactor, "roughnessFactor");
     result.metallic = factor(pbr.metallicFactor, "metallicFactor");
     result.emissive = factors<3>(material.emissiveFactor, "emissiveFactor", result.emissive);
+    if (const auto strength = material.extensions.find("KHR_materials_emissive_strength");
+        strength != material.extensions.end()) {
+      const tinygltf::Value& value = strength->second.Get("emissiveStrength");
+      if (value.IsNumber()) {
+        const double scale = value.GetNumberAsDouble();
+        if (!(std::isfinite(scale) && scale >= 0.0 && scale <= 1e6)) {
+          fail(file_, label_ +
+                          " KHR_materials_emissive_strength: emissiveStrength must be a "
+                          "number in [0, 1e6], got " +
+                          std::to_string(scale));
+        }
+        result.emissive *= float(scale);
+      }
+    }
     if (pbr.baseColorTexture.index >= 0) {
       result.colorTexture =
           texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture",

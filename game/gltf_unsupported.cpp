@@ -27,13 +27,17 @@ std::string materialLabel(const tinygltf::Material& material, std::size_t index)
 
 void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesystem::path& file,
                               std::vector<std::string>& warnings) {
-  if (!model.extensionsRequired.empty()) {
-    fail(file, "requires the extension " + model.extensionsRequired.front() +
-                   ", which Sightline cannot honour (it supports no glTF extensions)");
+  const std::set<std::string> supported = {"KHR_materials_emissive_strength"};
+  for (const std::string& required : model.extensionsRequired) {
+    if (!supported.count(required))
+      fail(file, "requires the extension " + required +
+                     ", which Sightline cannot honour (it supports " + joined(supported) + ")");
   }
   auto warn = [&](const std::string& text) { warnings.push_back(file.string() + ": " + text); };
-  if (!model.extensionsUsed.empty()) {
-    const std::set<std::string> used(model.extensionsUsed.begin(), model.extensionsUsed.end());
+  std::set<std::string> used;
+  for (const std::string& extension : model.extensionsUsed)
+    if (!supported.count(extension)) used.insert(extension);
+  if (!used.empty()) {
     warn("uses " + std::string(used.size() == 1 ? "the extension " : "the extensions ") +
          joined(used) + ", which Sightline does not support: ignored");
   }

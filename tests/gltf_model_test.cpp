@@ -346,8 +346,11 @@ TEST_F(GltfModelTest, every_primitive_keeps_its_material_in_order_of_first_use) 
       {{"name", "shiny"},
        {"pbrMetallicRoughness",
         {{"baseColorFactor", {0.5, 0.25, 1.0, 0.5}}, {"metallicFactor", 0.5}}},
-       {"emissiveFactor", {0.25, 0.5, 1.0}}},
+       {"emissiveFactor", {0.25, 0.5, 1.0}},
+       {"extensions", {{"KHR_materials_emissive_strength", {{"emissiveStrength", 4.0}}}}}},
   };
+  gltf.document["extensionsUsed"] = {"KHR_materials_emissive_strength"};
+  gltf.document["extensionsRequired"] = {"KHR_materials_emissive_strength"};
   gltf.write(root_ / "three.gltf");
   const game::GltfModel model = game::loadGltfModel(root_ / "three.gltf", root_);
   ASSERT_EQ(model.materials.size(), 3u);
@@ -356,8 +359,9 @@ TEST_F(GltfModelTest, every_primitive_keeps_its_material_in_order_of_first_use) 
   EXPECT_EQ(shiny.name, "shiny");
   EXPECT_EQ(shiny.baseColor, glm::vec3(0.5f, 0.25f, 1.0f));
   EXPECT_FLOAT_EQ(shiny.metallic, 0.5f);
-  EXPECT_FLOAT_EQ(shiny.roughness, 1.0f);  // glTF's default roughnessFactor
-  EXPECT_EQ(shiny.emissive, glm::vec3(0.25f, 0.5f, 1.0f));
+  EXPECT_FLOAT_EQ(shiny.roughness, 1.0f);                  // glTF's default roughnessFactor
+  EXPECT_EQ(shiny.emissive, glm::vec3(1.0f, 2.0f, 4.0f));  // emissiveFactor x emissiveStrength
+  EXPECT_TRUE(model.warnings.empty());                     // a supported extension
   EXPECT_FALSE(shiny.colorTexture.has_value());
   EXPECT_FALSE(shiny.normalTexture.has_value());
   EXPECT_EQ(model.materials[1].name, "plain");
@@ -394,7 +398,7 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
   EXPECT_EQ(loadError(root_ / "draco.gltf"),
             (root_ / "draco.gltf").string() +
                 ": requires the extension KHR_draco_mesh_compression, which Sightline cannot "
-                "honour (it supports no glTF extensions)");
+                "honour (it supports KHR_materials_emissive_strength)");
 }
 
 // A one-triangle model whose material uses image 0 as its base colour texture.
