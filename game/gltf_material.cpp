@@ -32,6 +32,10 @@ class MaterialMapper {
     result.baseColor = factors<3>(pbr.baseColorFactor, "baseColorFactor", result.baseColor);
     result.roughness = factor(pbr.roughnessFactor, "roughnessFactor");
     result.metallic = factor(pbr.metallicFactor, "metallicFactor");
+    if (pbr.baseColorFactor.size() == 4)
+      result.alpha = factor(pbr.baseColorFactor[3], "baseColorFactor");
+    if (material.alphaMode == "MASK")
+      result.alphaCutoff = factor(material.alphaCutoff, "alphaCutoff");
     result.emissive = factors<3>(material.emissiveFactor, "emissiveFactor", result.emissive);
     if (const auto strength = material.extensions.find("KHR_materials_emissive_strength");
         strength != material.extensions.end()) {

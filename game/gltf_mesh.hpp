@@ -16,6 +16,8 @@ struct GltfMaterial {
   std::string name;           // the glTF material's name, or "material N", or "default"
   glm::vec3 baseColor{1.0f};  // linear (glTF factors are linear)
   float metallic = 1.0f;      // glTF's default metallicFactor
+  float alpha = 1.0f;         // baseColorFactor's alpha
+  float alphaCutoff = 0.0f;   // alphaMode MASK: its alphaCutoff; 0: opaque
   float roughness = 1.0f;
   glm::vec3 emissive{0.0f};                         // linear
   std::optional<scene::TextureDesc> colorTexture;   // srgb = true

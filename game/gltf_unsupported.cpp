@@ -60,8 +60,8 @@ void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesyste
   for (std::size_t i = 0; i < model.materials.size(); ++i) {
     const tinygltf::Material& material = model.materials[i];
     const std::string label = materialLabel(material, i);
-    if (!material.alphaMode.empty() && material.alphaMode != "OPAQUE")
-      warn(label + " has alphaMode " + material.alphaMode + ": not supported; drawn opaque");
+    if (material.alphaMode == "BLEND")
+      warn(label + " has alphaMode BLEND: not supported; drawn opaque (MASK is)");
     if (material.occlusionTexture.index >= 0)
       warn(label + " has an occlusionTexture: not supported; ignored");
     if (material.emissiveTexture.index >= 0)

@@ -12,6 +12,11 @@ PipelineFeatures featuresOf(const scene::SceneDesc& scene) {
     if (instance.material >= scene.materials.size()) continue;
     const scene::MaterialKind kind = scene.materials[instance.material].kind;
     features.glass = features.glass || kind == scene::MaterialKind::Glass;
+    features.alphaMask =
+        features.alphaMask || scene.materials[instance.material].alphaCutoff > 0.0f;
+    for (const uint32_t material : instance.meshMaterials)
+      features.alphaMask = features.alphaMask || (material < scene.materials.size() &&
+                                                  scene.materials[material].alphaCutoff > 0.0f);
     features.mirrors = features.mirrors || kind == scene::MaterialKind::Mirror;
     if (kind == scene::MaterialKind::Mirror && instance.mesh < scene.meshes.size() &&
         !features.lightRoutes)
@@ -39,7 +44,7 @@ PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
 PipelineDescription describePipeline(const PipelineFeatures& features) {
   PipelineDescription description;
   description.misses = {"surface.rmiss", "shadow.rmiss"};
-  description.hitGroups = {"surface.rchit"};
+  description.hitGroups = {features.alphaMask ? "surface.rchit+alpha.rahit" : "surface.rchit"};
   if (features.glass) {
     description.misses.push_back("glass.rmiss");
     description.hitGroups.push_back("glass.rahit");
@@ -51,6 +56,8 @@ PipelineDescription describePipeline(const PipelineFeatures& features) {
       {"SOFT_SHADOWS", features.softShadows ? "1" : "0"},
       {"LIGHT_ROUTES", features.lightRoutes ? "1" : "0"},
   };
+  // Only levels with alpha-masked materials get the define (others keep their cache keys).
+  if (features.alphaMask) description.defines.push_back({"ALPHA_MASK", "1"});
   // Only soft-shadow variants have more than one sample to choose; others keep one key.
   if (features.softShadows && features.softShadowSamples > 1)
     description.defines.push_back(

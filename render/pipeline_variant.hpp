@@ -20,6 +20,9 @@ struct PipelineFeatures {
   // A visible mirror has flat faces, the level has a light and mirror bounces: light is routed
   // by the mirrors onto surfaces and sensors.
   bool lightRoutes = false;
+  // Some material is alpha-masked (glTF alphaMode MASK): the surface hit group gets the alpha
+  // test as its any-hit shader and rays stop forcing opaque hits.
+  bool alphaMask = false;
   bool operator==(const PipelineFeatures&) const = default;
 };
 

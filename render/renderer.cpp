@@ -48,6 +48,14 @@ Buffer makeStorage(const Context& context, const std::vector<T>& items, VkBuffer
   return buffer;
 }
 
+bool alphaMasked(const scene::SceneDesc& scene, const scene::InstanceDesc& instance) {
+  if (scene.materials[instance.material].alphaCutoff > 0.0f) return true;
+  for (const uint32_t material : instance.meshMaterials)
+    if (material < scene.materials.size() && scene.materials[material].alphaCutoff > 0.0f)
+      return true;
+  return false;
+}
+
 gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
   const glm::vec3 direction = glm::length(light.direction) > 0.0f ? glm::normalize(light.direction)
                                                                   : glm::vec3(0.0f, -1.0f, 0.0f);
@@ -134,7 +142,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     gpuMaterials.push_back(
         {glm::vec4(material.baseColor, material.specular),
          glm::vec4(material.emissive, material.roughness),
-         glm::vec4(material.mirrorTint, material.metallic), glm::vec4(material.glassTint, 0.0f),
+         glm::vec4(material.mirrorTint, material.metallic),
+         glm::vec4(material.glassTint, material.alphaCutoff > 0.0f
+                                           ? material.alphaCutoff / std::max(material.alpha, 1e-6f)
+                                           : 0.0f),
          glm::uvec4(
              static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
              textureSlot(material.normalTexture),
@@ -209,7 +220,11 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
     tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody);
-    if (glass) {
+    if (alphaMasked(scene, instance)) {
+      // Not opaque, so the alpha test (alpha.rahit) runs for every ray that meets it.
+      tlasInstance.hitGroup = HIT_GROUP_SURFACE;
+      tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;
+    } else if (glass) {
       // Non-opaque, so the glass any-hit shader runs; only glass rays see it.
       tlasInstance.hitGroup = HIT_GROUP_GLASS;
       tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR;
@@ -231,6 +246,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
   features.softShadowSamples = std::clamp(options.softShadowSamples, 1u, 16u);
   features.lightRoutes = features.lightRoutes && options.lightRoutes;
+  features.alphaMask = featuresOf(scene).alphaMask;  // all-features too: the scene needs it
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
@@ -422,7 +438,13 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   for (const std::string& miss : pipelineDescription_.misses) program.misses.push_back(load(miss));
   for (const std::string& group : pipelineDescription_.hitGroups) {
     HitGroup hitGroup{group, {}, {}};
-    (group.ends_with(".rahit") ? hitGroup.anyHit : hitGroup.closestHit) = load(group);
+    // "closest.rchit", "any.rahit" or both joined by '+'.
+    for (std::size_t start = 0; start < group.size();) {
+      const std::size_t end = std::min(group.find('+', start), group.size());
+      const std::string file = group.substr(start, end - start);
+      (file.ends_with(".rahit") ? hitGroup.anyHit : hitGroup.closestHit) = load(file);
+      start = end + 1;
+    }
     program.hitGroups.push_back(std::move(hitGroup));
   }
   program.recursionDepth = pipelineDescription_.recursionDepth;

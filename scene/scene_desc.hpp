@@ -48,7 +48,11 @@ struct MaterialDesc {
   // glTF's metallic-roughness model (GGX, Smith visibility, Schlick Fresnel) instead of
   // Blinn-Phong: F0 = mix(0.04, baseColor, metallic), diffuse baseColor (1 - metallic) / pi.
   bool metallicRoughness = false;
-  float metallic = 0.0f;       // [0, 1]
+  float metallic = 0.0f;  // [0, 1]
+  // glTF alphaMode MASK: a surface point whose alpha (the colour texture's alpha times `alpha`
+  // times the vertex colour's) is below the cutoff is a hole for every ray. 0: opaque.
+  float alphaCutoff = 0.0f;
+  float alpha = 1.0f;          // the base colour factor's alpha
   glm::vec3 emissive{0.0f};    // emitted radiance, added unlit
   glm::vec3 mirrorTint{1.0f};  // Mirror: reflectance times tint, linear
   glm::vec3 glassTint{1.0f};   // Glass: linear transmittance per front face

@@ -1,5 +1,14 @@
 // Shadow rays and the glass rays that tint them; shared by the camera and probe ray-gen
 // shaders. Needs HAS_GLASS defined and the scene bindings.
+#ifndef ALPHA_MASK
+#define ALPHA_MASK 0
+#endif
+// Opaque rays skip any-hit shaders; with alpha-masked materials the alpha test must run.
+#if ALPHA_MASK
+#define SURFACE_RAY_FLAGS gl_RayFlagsNoneEXT
+#else
+#define SURFACE_RAY_FLAGS gl_RayFlagsOpaqueEXT
+#endif
 layout(location = PAYLOAD_SHADOW) rayPayloadEXT float visibility;
 #if HAS_GLASS
 layout(location = PAYLOAD_GLASS) rayPayloadEXT GlassPath glass;
@@ -29,7 +38,7 @@ vec3 glassTransmittance(vec3 origin, vec3 direction, float tMax, uint mask) {
 vec3 shadowTransmittance(vec3 origin, vec3 toLight, float distanceToLight) {
   visibility = 0.0;
   traceRayEXT(sceneTlas,
-              gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT |
+              SURFACE_RAY_FLAGS | gl_RayFlagsTerminateOnFirstHitEXT |
                   gl_RayFlagsSkipClosestHitShaderEXT,
               shadowCasterMask, 0, 1, MISS_SHADOW, origin, 0.0, toLight, distanceToLight,
               PAYLOAD_SHADOW);

@@ -117,7 +117,9 @@ struct GpuMaterial {
   vec4 baseColorSpecular;  // rgb: linear albedo, a: specular weight
   vec4 emissiveRoughness;  // rgb: linear emitted radiance, a: roughness
   vec4 mirrorTint;         // rgb: reflectance times tint (MATERIAL_MIRROR); a: metallic
-  vec4 glassTint;          // rgb: transmittance per front face (MATERIAL_GLASS)
+  // rgb: transmittance per front face (MATERIAL_GLASS); a: the alpha cutoff divided by the
+  // base colour's alpha factor, compared with texture alpha x vertex alpha (0: opaque)
+  vec4 glassTint;
   // x: MATERIAL_*, y: colour texture + 1, z: normal map + 1 (0: none), w: SHADING_*
   uvec4 kindTextures;
 };

@@ -5,25 +5,11 @@
 #include "shared_types.h"
 #include "scene_bindings.glsl"
 #include "ray_payloads.glsl"
+#include "vertex_fetch.glsl"
 
 // Reports where and what the ray hit, with textures applied; the ray-gen shader shades.
 layout(location = PAYLOAD_SURFACE) rayPayloadInEXT SurfaceHit hit;
 hitAttributeEXT vec2 barycentrics;
-
-vec3 fetchVec3(uint vertex, uint component) {
-  uint base = vertex * VERTEX_FLOATS + component;
-  return vec3(vertexFloats[base], vertexFloats[base + 1u], vertexFloats[base + 2u]);
-}
-
-vec3 fetchColor(uint vertex) {
-  uint base = vertex * VERTEX_FLOATS + 8u;
-  return vec3(vertexFloats[base], vertexFloats[base + 1u], vertexFloats[base + 2u]);
-}
-
-vec2 fetchUv(uint vertex) {
-  uint base = vertex * VERTEX_FLOATS + 6u;
-  return vec2(vertexFloats[base], vertexFloats[base + 1u]);
-}
 
 // Tangent-space normal map -> object-space normal, with a per-triangle tangent frame from the
 // positions and UVs. +Y in the map points towards the top of the image (decreasing v), as in
@@ -49,14 +35,10 @@ vec3 applyNormalMap(vec3 normal, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, 
 
 void main() {
   uvec4 geometry = instances[gl_InstanceCustomIndexEXT].geometry;
-  uint firstIndex = geometry.x + 3u * uint(gl_PrimitiveID);
-  uint v0 = indices[firstIndex] + geometry.y;
-  uint v1 = indices[firstIndex + 1u] + geometry.y;
-  uint v2 = indices[firstIndex + 2u] + geometry.y;
+  uvec3 corners = triangleVertices(geometry, uint(gl_PrimitiveID));
+  uint v0 = corners.x, v1 = corners.y, v2 = corners.z;
   vec3 weights = vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
-  uint materialIndex = geometry.z;
-  if ((materialIndex & MATERIAL_PER_TRIANGLE) != 0u)
-    materialIndex = triangleMaterials[(materialIndex & ~MATERIAL_PER_TRIANGLE) + gl_PrimitiveID];
+  uint materialIndex = triangleMaterial(geometry, uint(gl_PrimitiveID));
   GpuMaterial material = materials[materialIndex];
 
   vec3 p0 = fetchVec3(v0, 0u), p1 = fetchVec3(v1, 0u), p2 = fetchVec3(v2, 0u);
@@ -71,7 +53,8 @@ void main() {
   }
   // Vertex colours (white unless a glTF model gave COLOR_0) multiply the base colour.
   vec3 albedo = material.baseColorSpecular.rgb *
-                (fetchColor(v0) * weights.x + fetchColor(v1) * weights.y + fetchColor(v2) * weights.z);
+                (fetchColor(v0).rgb * weights.x + fetchColor(v1).rgb * weights.y +
+                 fetchColor(v2).rgb * weights.z);
   if (material.kindTextures.y > 0u) {
     albedo *= textureLod(textures[nonuniformEXT(material.kindTextures.y - 1u)], uv, 0.0).rgb;
   }

@@ -378,7 +378,7 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
       {{"POSITION", gltf.addAccessor(packedVec3s(kTriangle), kFloat, 3, "VEC3")}}};
   primitive["material"] = 0;
   gltf.addMesh("tri", {primitive});
-  gltf.document["materials"] = {{{"name", "leaf"}, {"alphaMode", "MASK"}}};
+  gltf.document["materials"] = {{{"name", "leaf"}, {"alphaMode", "BLEND"}}};
   gltf.document["cameras"] = {
       {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}};
   gltf.document["extensionsUsed"] = {"KHR_materials_clearcoat", "EXT_fancy"};
@@ -391,7 +391,8 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
                        "does not support: ignored",
                 file + "has 1 camera: ignored (the level's camera is used)",
                 file + "has morph targets: not supported; drawn without them",
-                file + "material \"leaf\" has alphaMode MASK: not supported; drawn opaque"}));
+                file + "material \"leaf\" has alphaMode BLEND: not supported; drawn opaque (MASK "
+                       "is)"}));
 
   gltf.document["extensionsRequired"] = {"KHR_draco_mesh_compression"};
   gltf.write(root_ / "draco.gltf");

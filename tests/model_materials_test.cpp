@@ -1,5 +1,6 @@
 // A glTF model of several materials renders each primitive in its own (docs/LEVELS.md, "glTF
 // models"), unless the entity names one material for all of it.
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <stb/stb_image_write.h>
 
 #include "game/level_loader.hpp"
 #include "gltf_builder.hpp"
@@ -53,6 +55,39 @@ void writeOrangeVertexColourModel(const fs::path& path) {
   gltf.write(path);
 }
 
+// A 2x1 RGBA PNG: an opaque red texel, then a transparent one.
+std::string halfTransparentPng() {
+  const std::array<uint8_t, 8> pixels = {255, 0, 0, 255, 255, 0, 0, 0};
+  std::string png;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int bytes) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<std::size_t>(bytes));
+      },
+      &png, 2, 1, 4, pixels.data(), 8);
+  return png;
+}
+
+// One quad across the view whose texture is opaque on its left half and a hole on its right,
+// alphaMode MASK.
+void writeMaskedQuadModel(const fs::path& path) {
+  test::GltfBuilder gltf;
+  nlohmann::json quad = gltf.primitive({{-1, -0.5f, 0}, {1, -0.5f, 0}, {1, 0.5f, 0}, {-1, 0.5f, 0}},
+                                       {0, 1, 2, 0, 2, 3});
+  quad["attributes"]["TEXCOORD_0"] = gltf.addAccessor(
+      test::packed(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}), test::kFloat, 4, "VEC2");
+  quad["material"] = 0;
+  gltf.addMesh("pair", {quad});
+  gltf.document["materials"] = {
+      {{"name", "leaf"},
+       {"alphaMode", "MASK"},
+       {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}, {"metallicFactor", 0}}}}};
+  gltf.document["textures"] = {{{"source", 0}}};
+  gltf.document["images"] = {
+      {{"uri", "data:image/png;base64," + test::base64(halfTransparentPng())}}};
+  gltf.write(path);
+}
+
 class ModelMaterialsTest : public test::VulkanTest {
  protected:
   void SetUp() override {
@@ -67,15 +102,17 @@ class ModelMaterialsTest : public test::VulkanTest {
     test::VulkanTest::TearDown();
   }
 
-  // The pair seen straight on under a sun behind the camera; `material` names one for all.
+  // The pair seen straight on under a sun behind the camera, a green wall 1 m behind it;
+  // `material` names one for all.
   render::Rgba8Image render(const std::string& material) {
     std::ofstream(root_ / "level.json") << R"({
       "format": 1, "name": "Pair",
       "camera": { "position": [0, 0, 2.5] },
-      "materials": { "paint": { "color": [0.5, 0.5, 0.5] } },
-      "meshes": { "pair": { "gltf": "pair.gltf" } },
+      "materials": { "paint": { "color": [0.5, 0.5, 0.5] }, "green": { "color": [0, 1, 0] } },
+      "meshes": { "pair": { "gltf": "pair.gltf" }, "wall": { "box": { "size": [6, 6, 0.1] } } },
       "entities": { "pair": { "mesh": "pair")" +
-                                               material + R"( } },
+                                               material + R"( },
+                    "wall": { "mesh": "wall", "material": "green", "position": [0, 0, -1] } },
       "lights": { "sun": { "type": "directional", "direction": [0, 0, -1], "intensity": 1 } }
     })";
     const game::Level level = game::loadLevel(root_ / "level.json");
@@ -120,6 +157,22 @@ TEST_F(ModelMaterialsTest, vertex_colours_multiply_the_base_colour) {
   EXPECT_GT(image.pixels[centre], image.pixels[centre + 1] + 20);
   EXPECT_GT(image.pixels[centre + 1], 40);
   EXPECT_LT(image.pixels[centre + 2], 40);
+}
+
+}  // namespace
+
+namespace {
+
+// Camera rays see the wall through the hole; the sun's shadow rays pass it too, so the wall
+// there is lit (shadowed by the quad it would be dark).
+TEST_F(ModelMaterialsTest, an_alpha_masked_quad_has_holes_for_camera_and_shadow_rays) {
+  writeMaskedQuadModel(root_ / "pair.gltf");
+  const render::Rgba8Image image = render("");
+  const size_t opaque = (8 * 32 + 12) * 4, hole = (8 * 32 + 19) * 4;
+  EXPECT_GT(image.pixels[opaque], 120);  // the red texel
+  EXPECT_LT(image.pixels[opaque + 1], 40);
+  EXPECT_LT(image.pixels[hole], 40);  // the lit green wall behind the hole
+  EXPECT_GT(image.pixels[hole + 1], 120);
 }
 
 }  // namespace

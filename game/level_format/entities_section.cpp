@@ -39,6 +39,8 @@ std::vector<uint32_t> modelMaterials(LevelReader& reader, uint32_t mesh,
     desc.baseColor = source.baseColor;
     desc.metallicRoughness = true;
     desc.metallic = source.metallic;
+    desc.alpha = source.alpha;
+    desc.alphaCutoff = source.alphaCutoff;
     desc.roughness = source.roughness;
     desc.emissive = source.emissive;
     const std::string meshPointer = childPointer("/meshes", meshId);
