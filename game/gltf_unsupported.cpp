@@ -62,6 +62,10 @@ void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesyste
     const std::string label = materialLabel(material, i);
     if (material.alphaMode == "BLEND")
       warn(label + " has alphaMode BLEND: not supported; drawn opaque (MASK is)");
+    if (material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
+      warn(label +
+           " has a metallicRoughnessTexture: not supported; its metallic and roughness "
+           "factors are used alone");
     if (material.occlusionTexture.index >= 0)
       warn(label + " has an occlusionTexture: not supported; ignored");
     if (material.emissiveTexture.index >= 0)

@@ -88,7 +88,7 @@ Level readLevel(LevelReader& reader, const std::string& text) {
       [&](const std::string& id, const OrderedJson& value, const std::string& pointer) {
         level.entities.push_back(readEntity(reader, id, value, pointer, level));
         const Entity& entity = level.entities.back();
-        if (level.lightViaMirrors &&
+        if (level.lightViaMirrors && !level.lights.empty() && level.maxMirrorBounces > 0 &&
             level.materials[entity.material].kind == scene::MaterialKind::Mirror &&
             scene::flatFaces(level.meshes[entity.mesh]).empty())
           level.warnings.push_back(

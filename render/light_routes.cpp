@@ -114,6 +114,7 @@ std::vector<gpu::GpuLightRoute> findLightRoutes(std::span<const MirrorFace> face
   std::vector<gpu::GpuLightRoute> routes;
   std::vector<PartialRoute> generation;
   for (uint32_t light = 0; light < lights.size(); ++light) {
+    if (lights[light].directionEnabled.w == 0.0f) continue;  // switched off: no slot taken
     PartialRoute start;
     start.route.image = lights[light];
     start.route.lightMirrors = glm::uvec4(light, 0, 0, 0);

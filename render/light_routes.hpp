@@ -19,10 +19,10 @@ struct MirrorFace {
   glm::vec3 tint{1.0f};
 };
 
-// The routes of every light via up to `maxMirrors` faces (at most MAX_ROUTE_MIRRORS), shortest
-// first, then in light and face order, at most MAX_LIGHT_ROUTES. A route is kept when each step
-// can happen somewhere on the faces: the light (or its image so far) in front of the next face,
-// consecutive faces each partly in front of the other, and some of the next face seeing the
+// The routes of every light that is on via up to `maxMirrors` faces (at most MAX_ROUTE_MIRRORS),
+// shortest first, then in light and face order, at most MAX_LIGHT_ROUTES. A route is kept when each
+// step can happen somewhere on the faces: the light (or its image so far) in front of the next
+// face, consecutive faces each partly in front of the other, and some of the next face seeing the
 // light through the previous one's rectangle.
 std::vector<gpu::GpuLightRoute> findLightRoutes(std::span<const MirrorFace> faces,
                                                 std::span<const gpu::GpuLight> lights,

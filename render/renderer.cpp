@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include <glm/gtc/matrix_access.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include "render/barriers.hpp"
 #include "render/context.hpp"
@@ -245,7 +246,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   PipelineFeatures features =
       options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
   features.softShadowSamples = std::clamp(options.softShadowSamples, 1u, 16u);
-  features.lightRoutes = features.lightRoutes && options.lightRoutes;
+  // Routing follows the scene even in the all-features variant (a level may turn it off).
+  features.lightRoutes = featuresOf(scene).lightRoutes && options.lightRoutes;
   features.alphaMask = featuresOf(scene).alphaMask;  // all-features too: the scene needs it
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
@@ -522,9 +524,14 @@ void Renderer::setProbes(const scene::ProbeRequest& request) {
     const scene::ExposureProbeDesc& exposure = request.exposure[i];
     if (exposure.light >= gpuLights_.size() || exposure.points.size() > EXPOSURE_SAMPLES)
       throw RenderError("setProbes: an exposure probe names no light or has over 64 points");
+    // The light's colour as the level made it, so a feedback tint changes no colour reading.
+    const glm::vec3 radiance = lightRadiances_[exposure.light];
+    const float brightest = std::max({radiance.r, radiance.g, radiance.b});
+    const glm::vec3 chroma = brightest > 0.0f ? radiance / brightest : glm::vec3(0.0f);
     setup.exposure[i] =
-        glm::uvec4(exposure.light, exposure.points.size(), static_cast<uint32_t>(exposure.channel),
-                   exposure.onPlayerBody ? 1u : 0u);
+        glm::uvec4(exposure.light, exposure.points.size(),
+                   static_cast<uint32_t>(exposure.channel) | (exposure.onPlayerBody ? 0x100u : 0u),
+                   glm::packUnorm4x8(glm::vec4(chroma, 0.0f)));
     counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
   }
   counts.focusPixels.assign(request.focus.size(), 0);

@@ -159,8 +159,9 @@ struct ProbeSetup {
   uvec4 counts;  // x: focus probes, y: exposure probes
   // x: instance, y: region's first pixel (x | y << 16), z: one past its last (same packing)
   uvec4 focus[MAX_FOCUS_PROBES];
-  // x: light, y: sample points used (<= EXPOSURE_SAMPLES), z: EXPOSURE_CHANNEL_*, w: 1 when the
-  // points are on the player's body (its rays pass through the body); points at
+  // x: light, y: sample points used (<= EXPOSURE_SAMPLES), z: EXPOSURE_CHANNEL_* | 0x100 when
+  // the points are on the player's body (its rays pass through the body), w: the light's colour
+  // as the level made it (no feedback tint), largest channel 1, packUnorm4x8; points at
   // [probe * SAMPLES]
   uvec4 exposure[MAX_EXPOSURE_PROBES];
 };

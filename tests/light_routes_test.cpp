@@ -83,9 +83,11 @@ std::vector<scene::ExposurePoint> plate(const glm::vec3& centre, const glm::vec3
 class LightRoutesTest : public test::VulkanTest {
  protected:
   // The exposure of `points` to light 0, one probe frame.
+  // `tint`: the feedback tint the game may give the light (probes must not see it).
   static float exposure(const SceneBuilder& builder,
                         const std::vector<scene::ExposurePoint>& points,
-                        scene::ExposureChannel channel = scene::ExposureChannel::Luminance) {
+                        scene::ExposureChannel channel = scene::ExposureChannel::Luminance,
+                        const glm::vec3& tint = glm::vec3(1.0f)) {
     scene::SceneDesc scene = builder.scene;
     scene.exposureProbes = true;
     render::RendererOptions options;
@@ -97,6 +99,7 @@ class LightRoutesTest : public test::VulkanTest {
     probe.channel = channel;
     probe.points = points;
     renderer.setProbes({{}, {probe}});
+    renderer.setLightTint(0, tint);
     scene::FrameDesc frame;
     frame.camera.position = glm::vec3(0.0f, 10.0f, 0.0f);
     renderer.renderFrame(frame, false);
@@ -243,6 +246,8 @@ TEST_F(LightRoutesTest, a_red_sensor_reads_nothing_behind_green_glass_and_all_be
   white.light(whiteLamp);
   EXPECT_EQ(exposure(white, points, red), 0.0f);
   EXPECT_EQ(exposure(behindGlass({1, 0, 0}, whiteLamp), points, red), 1.0f);
+  // A watcher's feedback tint (warming towards red) changes the picture, not the readings.
+  EXPECT_EQ(exposure(white, points, red, {1.6f, 0.55f, 0.35f}), 0.0f);
   // A sensor of any colour counts the luminance: red glass passes 0.2126 of white light.
   EXPECT_NEAR(exposure(behindGlass({1, 0, 0}, whiteLamp), points), 0.2126f, 1.0f / 1024.0f);
 }
