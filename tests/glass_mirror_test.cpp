@@ -19,26 +19,14 @@ using scene::MaterialKind;
 using test::channel;
 
 using test::at;
+using test::glassMaterial;
+using test::mirrorMaterial;
 using test::SceneBuilder;
 
 MaterialDesc emissive(const glm::vec3& radiance) {
   MaterialDesc material;
   material.baseColor = glm::vec3(0.0f);
   material.emissive = radiance;
-  return material;
-}
-
-MaterialDesc glass(const glm::vec3& tint) {
-  MaterialDesc material;
-  material.kind = MaterialKind::Glass;
-  material.glassTint = tint;
-  return material;
-}
-
-MaterialDesc mirror(const glm::vec3& tint = glm::vec3(1.0f)) {
-  MaterialDesc material;
-  material.kind = MaterialKind::Mirror;
-  material.mirrorTint = tint;
   return material;
 }
 
@@ -82,7 +70,7 @@ TEST_F(GlassMirrorTest, glass_pane_in_front_of_white_emitter_shows_its_tint) {
   const glm::vec3 tint(0.2f, 0.5f, 0.8f);
   SceneBuilder builder = wallScene();
   builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
-                   builder.material(glass(tint)), at({0, 0, -1}));
+                   builder.material(glassMaterial(tint)), at({0, 0, -1}));
   const Frame frame = render(builder.scene, 15, 15);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(channel(frame.image, 7, 7, c), expectedByte(tint[c]), 1);
   EXPECT_EQ(frame.pipeline.hitGroups, (std::vector<std::string>{"surface.rchit", "glass.rahit"}));
@@ -99,7 +87,7 @@ TEST_F(GlassMirrorTest, overlapping_panes_multiply_and_creation_order_does_not_m
     SceneBuilder builder = wallScene();
     const uint32_t pane = builder.mesh(game::primitives::box({4, 4, 0.02f}));
     for (int which : order)
-      builder.instance(pane, builder.material(glass(tints[which])),
+      builder.instance(pane, builder.material(glassMaterial(tints[which])),
                        at({0, 0, -0.4f - 0.3f * float(which)}));
     const Frame frame = render(builder.scene, 9, 9);
     if (!first) {
@@ -119,7 +107,7 @@ TEST_F(GlassMirrorTest, glass_behind_an_opaque_wall_is_invisible) {
   const Frame without = render(wallScene().scene, 16, 16);
   SceneBuilder builder = wallScene();
   builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
-                   builder.material(glass({0.1f, 0.1f, 0.1f})), at({0, 0, -3}));
+                   builder.material(glassMaterial({0.1f, 0.1f, 0.1f})), at({0, 0, -3}));
   const Frame with = render(builder.scene, 16, 16);
   EXPECT_EQ(with.pipeline.misses.size(), 3u);  // the glass variant really ran
   EXPECT_EQ(without.image.pixels, with.image.pixels);
@@ -131,7 +119,7 @@ TEST_F(GlassMirrorTest, mirror_at_45_degrees_shows_object_behind_camera_at_cpu_c
   SceneBuilder builder;
   const float thickness = 0.01f;
   const uint32_t mirrorInstance = builder.instance(
-      builder.mesh(game::primitives::box({30, 30, thickness})), builder.material(mirror()),
+      builder.mesh(game::primitives::box({30, 30, thickness})), builder.material(mirrorMaterial()),
       glm::rotate(at({0, 0, -3}), glm::radians(45.0f), glm::vec3(0, 1, 0)));
   const glm::vec3 objectPosition(4.0f, 0.0f, 0.3f);
   const uint32_t object =
@@ -168,7 +156,7 @@ TEST_F(GlassMirrorTest, parallel_mirrors_stop_at_the_bounce_cap_without_nan) {
   for (uint32_t cap : {1u, 4u, 31u}) {
     SceneBuilder builder;
     const uint32_t slab = builder.mesh(game::primitives::box({10, 10, 0.02f}));
-    const uint32_t silver = builder.material(mirror({0.9f, 0.9f, 0.9f}));
+    const uint32_t silver = builder.material(mirrorMaterial({0.9f, 0.9f, 0.9f}));
     builder.instance(slab, silver, at({0, 0, -1}));
     builder.instance(slab, silver, at({0, 0, 1}));
     builder.scene.environment.skyHorizon = glm::vec3(0.5f);
@@ -192,7 +180,7 @@ TEST_F(GlassMirrorTest, glass_shadow_on_white_floor_is_tint_times_unshadowed) {
   builder.instance(builder.mesh(game::primitives::plane(100, 100)), builder.material(white),
                    glm::mat4(1.0f));
   builder.instance(builder.mesh(game::primitives::box({0.2f, 0.02f, 0.2f})),
-                   builder.material(glass(tint)), at({0, 0.3f, 0}));
+                   builder.material(glassMaterial(tint)), at({0, 0.3f, 0}));
   scene::LightDesc sun;
   sun.type = scene::LightType::Directional;
   sun.direction = glm::vec3(1, -1, 0);
@@ -224,7 +212,7 @@ TEST_F(GlassMirrorTest, path_reaches_orb_through_glass_and_via_mirrors_but_not_b
     SceneBuilder builder;
     const uint32_t orb = orbScene(builder, {0, 0, -4});
     builder.instance(builder.mesh(game::primitives::box({2, 2, 0.02f})),
-                     builder.material(glass({0.5f, 0.5f, 1})), at({0, 0, -2}));
+                     builder.material(glassMaterial({0.5f, 0.5f, 1})), at({0, 0, -2}));
     const Frame frame = render(builder.scene, size, size);
     EXPECT_EQ(frame.paths[centre].finalInstance, orb);
     EXPECT_EQ(frame.paths[centre].bounces, 0u);
@@ -233,7 +221,7 @@ TEST_F(GlassMirrorTest, path_reaches_orb_through_glass_and_via_mirrors_but_not_b
     SceneBuilder builder;
     const uint32_t orb = orbScene(builder, {0, 0, 3});
     builder.instance(builder.mesh(game::primitives::box({10, 10, 0.02f})),
-                     builder.material(mirror()), at({0, 0, -3}));
+                     builder.material(mirrorMaterial()), at({0, 0, -3}));
     const Frame frame = render(builder.scene, size, size, {{0, 0, 0}, 0, 0, 20});
     EXPECT_EQ(frame.paths[centre].finalInstance, orb);
     EXPECT_EQ(frame.paths[centre].bounces, 1u);
@@ -241,7 +229,7 @@ TEST_F(GlassMirrorTest, path_reaches_orb_through_glass_and_via_mirrors_but_not_b
   {  // via two mirrors: a periscope, down then forward
     SceneBuilder builder;
     const uint32_t slab = builder.mesh(game::primitives::box({3, 3, 0.02f}));
-    const uint32_t silver = builder.material(mirror());
+    const uint32_t silver = builder.material(mirrorMaterial());
     // Upper mirror ahead at z=-2 turns the view down; lower mirror at y=-3 turns it forward.
     builder.instance(slab, silver,
                      glm::rotate(at({0, 0, -2}), glm::radians(45.0f), glm::vec3(1, 0, 0)));
@@ -305,10 +293,10 @@ TEST(PipelineVariant, features_follow_the_materials_instances_use) {
   SceneBuilder builder;
   const uint32_t cube = builder.mesh(game::primitives::box({1, 1, 1}));
   builder.instance(cube, builder.material(MaterialDesc{}), glm::mat4(1.0f));
-  builder.material(glass({0.5f, 0.5f, 0.5f}));  // defined but unused: no glass variant
+  builder.material(glassMaterial({0.5f, 0.5f, 0.5f}));  // defined but unused: no glass variant
   builder.scene.maxMirrorBounces = 7;
   EXPECT_EQ(render::featuresOf(builder.scene), (render::PipelineFeatures{false, false, 0}));
-  builder.instance(cube, builder.material(mirror()), glm::mat4(1.0f));
+  builder.instance(cube, builder.material(mirrorMaterial()), glm::mat4(1.0f));
   EXPECT_EQ(render::featuresOf(builder.scene), (render::PipelineFeatures{false, true, 7}));
   // With a light, a flat mirror routes light; a curved one does not.
   scene::LightDesc lamp;

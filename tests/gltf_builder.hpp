@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <stb/stb_image_write.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -30,6 +31,18 @@ inline std::string base64(const std::string& bytes) {
     encoded += i + 2 < bytes.size() ? alphabet[group & 63] : '=';
   }
   return encoded;
+}
+
+// `pixels` (rows top to bottom, `channels` bytes each) encoded as a PNG.
+inline std::string pngBytes(int width, int height, int channels, const uint8_t* pixels) {
+  std::string png;
+  stbi_write_png_to_func(
+      [](void* context, void* data, int bytes) {
+        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                                   static_cast<std::size_t>(bytes));
+      },
+      &png, width, height, channels, pixels, width * channels);
+  return png;
 }
 
 template <typename T>

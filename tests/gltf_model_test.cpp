@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <stb/stb_image_write.h>
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 
@@ -45,13 +44,7 @@ std::string readFile(const fs::path& path) {
 // A 2x1 RGB PNG, red then green.
 std::string tinyPng() {
   const std::array<uint8_t, 6> pixels = {255, 0, 0, 0, 255, 0};
-  std::string png;
-  stbi_write_png_to_func(
-      [](void* context, void* data, int bytes) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                                   static_cast<std::size_t>(bytes));
-      },
-      &png, 2, 1, 3, pixels.data(), 6);
+  const std::string png = test::pngBytes(2, 1, 3, pixels.data());
   EXPECT_FALSE(png.empty());
   return png;
 }

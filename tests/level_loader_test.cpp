@@ -15,6 +15,7 @@
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
 #include "game/primitives.hpp"
+#include "gltf_builder.hpp"
 #include "scene/color.hpp"
 #include "temp_dir_fixture.hpp"
 
@@ -68,21 +69,7 @@ using test::TempDirTest;
 
 // ----- glTF writing helpers -----
 
-std::string base64(const std::string& bytes) {
-  static const char* const alphabet =
-      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string encoded;
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    uint32_t group = static_cast<unsigned char>(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 1]) << 8;
-    if (i + 2 < bytes.size()) group |= static_cast<unsigned char>(bytes[i + 2]);
-    encoded += alphabet[(group >> 18) & 63];
-    encoded += alphabet[(group >> 12) & 63];
-    encoded += i + 1 < bytes.size() ? alphabet[(group >> 6) & 63] : '=';
-    encoded += i + 2 < bytes.size() ? alphabet[group & 63] : '=';
-  }
-  return encoded;
-}
+using test::base64;
 
 enum class IndexType { None = 0, U8 = 5121, U16 = 5123, U32 = 5125 };
 

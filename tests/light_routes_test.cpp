@@ -20,23 +20,11 @@ namespace {
 using scene::MaterialDesc;
 using scene::MaterialKind;
 using test::at;
+using test::glassMaterial;
+using test::mirrorMaterial;
 using test::SceneBuilder;
 
 constexpr float kPi = 3.14159265358979f;
-
-MaterialDesc mirrorMaterial(float reflectance) {
-  MaterialDesc material;
-  material.kind = MaterialKind::Mirror;
-  material.mirrorTint = glm::vec3(reflectance);
-  return material;
-}
-
-MaterialDesc glassMaterial(const glm::vec3& tint) {
-  MaterialDesc material;
-  material.kind = MaterialKind::Glass;
-  material.glassTint = tint;
-  return material;
-}
 
 // A square mirror of side `size` centred at `centre` whose reflecting side faces `normal`
 // (a plane mesh, which reflects on both sides), turned by `tiltDegrees` about the vertical
@@ -123,7 +111,7 @@ void addBar(SceneBuilder& builder) {
 SceneBuilder viaOneMirror(float reflectance, float tiltDegrees, const scene::LightDesc& light) {
   SceneBuilder builder;
   builder.instance(builder.mesh(game::primitives::plane(0.3f, 0.3f)),
-                   builder.material(mirrorMaterial(reflectance)),
+                   builder.material(mirrorMaterial(glm::vec3(reflectance))),
                    mirrorFacing(kMirror, {0, 0, 1}, tiltDegrees));
   builder.instance(builder.mesh(game::primitives::box({0.2f, 2.0f, 0.5f})),
                    builder.material(MaterialDesc{}), at({0.0f, 1.0f, 3.5f}));
@@ -210,9 +198,9 @@ TEST_F(LightRoutesTest, turning_the_mirror_5_degrees_moves_the_light_off_the_sen
 TEST_F(LightRoutesTest, two_mirrors_in_sequence_multiply_their_reflectances) {
   SceneBuilder builder;
   const uint32_t square = builder.mesh(game::primitives::plane(0.3f, 0.3f));
-  builder.instance(square, builder.material(mirrorMaterial(0.8f)),
+  builder.instance(square, builder.material(mirrorMaterial(glm::vec3(0.8f))),
                    mirrorFacing({0, 1, 0}, {1, 0, 1}));
-  builder.instance(square, builder.material(mirrorMaterial(0.5f)),
+  builder.instance(square, builder.material(mirrorMaterial(glm::vec3(0.5f))),
                    mirrorFacing({2, 1, 0}, {-1, 0, 1}));
   builder.instance(builder.mesh(game::primitives::box({0.2f, 2.0f, 0.6f})),
                    builder.material(MaterialDesc{}), at({1, 1, 2}));
@@ -263,7 +251,8 @@ TEST_F(LightRoutesTest, the_patch_a_mirror_throws_is_as_bright_as_the_sensor_rea
   builder.instance(builder.mesh(game::primitives::plane(20.0f, 20.0f)), builder.material(floor),
                    glm::mat4(1.0f));
   builder.instance(builder.mesh(game::primitives::plane(1.0f, 1.0f)),
-                   builder.material(mirrorMaterial(0.8f)), mirrorFacing({0, 1, 0}, {0, 0, 1}));
+                   builder.material(mirrorMaterial(glm::vec3(0.8f))),
+                   mirrorFacing({0, 1, 0}, {0, 0, 1}));
   builder.instance(builder.mesh(game::primitives::box({0.6f, 0.02f, 0.6f})),
                    builder.material(MaterialDesc{}), at({0, 1, 3}));
   const float intensity = 100.0f;

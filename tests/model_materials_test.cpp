@@ -9,7 +9,6 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <stb/stb_image_write.h>
 
 #include "game/level_loader.hpp"
 #include "gltf_builder.hpp"
@@ -58,14 +57,7 @@ void writeOrangeVertexColourModel(const fs::path& path) {
 // A 2x1 RGBA PNG: an opaque red texel, then a transparent one.
 std::string halfTransparentPng() {
   const std::array<uint8_t, 8> pixels = {255, 0, 0, 255, 255, 0, 0, 0};
-  std::string png;
-  stbi_write_png_to_func(
-      [](void* context, void* data, int bytes) {
-        static_cast<std::string*>(context)->append(static_cast<const char*>(data),
-                                                   static_cast<std::size_t>(bytes));
-      },
-      &png, 2, 1, 4, pixels.data(), 8);
-  return png;
+  return test::pngBytes(2, 1, 4, pixels.data());
 }
 
 // One quad across the view whose texture is opaque on its left half and a hole on its right,

@@ -17,26 +17,14 @@ namespace {
 using scene::MaterialDesc;
 using scene::MaterialKind;
 using test::at;
+using test::glassMaterial;
+using test::mirrorMaterial;
 using test::SceneBuilder;
 
 constexpr float kPi = 3.14159265358979f;
 
 MaterialDesc grey() {
   return MaterialDesc{};
-}
-
-MaterialDesc glass(const glm::vec3& tint) {
-  MaterialDesc material;
-  material.kind = MaterialKind::Glass;
-  material.glassTint = tint;
-  return material;
-}
-
-MaterialDesc mirror() {
-  MaterialDesc material;
-  material.kind = MaterialKind::Mirror;
-  material.mirrorTint = glm::vec3(1.0f);
-  return material;
 }
 
 class ProbeTest : public test::VulkanTest {
@@ -133,7 +121,7 @@ TEST_F(ProbeTest, occluded_orb_counts_zero_and_glass_in_front_changes_nothing) {
   const uint32_t direct = measure(open.scene, {{{orb, {1, 1}}}, {}}, 48, 32).focusPixels[0];
   SceneBuilder glazed = sphereAhead(orb);
   glazed.instance(glazed.mesh(game::primitives::box({3, 3, 0.02f})),
-                  glazed.material(glass({0.2f, 0.9f, 0.3f})), at({0, 0, -2}));
+                  glazed.material(glassMaterial({0.2f, 0.9f, 0.3f})), at({0, 0, -2}));
   EXPECT_GT(direct, 0u);
   EXPECT_EQ(measure(glazed.scene, {{{orb, {1, 1}}}, {}}, 48, 32).focusPixels[0], direct);
 }
@@ -145,7 +133,7 @@ TEST_F(ProbeTest, orb_seen_only_in_a_mirror_counts) {
   const glm::mat4 turned =
       glm::rotate(at({0, 0, -3}), glm::radians(45.0f), glm::vec3(0.0f, 1.0f, 0.0f));
   builder.instance(builder.mesh(game::primitives::box({2.0f, 2.0f, 0.02f})),
-                   builder.material(mirror()), turned);
+                   builder.material(mirrorMaterial()), turned);
   const uint32_t orb = builder.instance(builder.mesh(game::primitives::sphere(0.4f, 32, 16)),
                                         builder.material(grey()), at({3, 0, -3}));
   const scene::ProbeCounts counts = measure(builder.scene, {{{orb, {0.3f, 0.3f}}}, {}}, 64, 48);
@@ -182,7 +170,7 @@ scene::SceneDesc sensorScene(scene::LightDesc light, bool blockHalf, bool glassA
                      builder.material(grey()), at({-0.5f, 1.0f, 0}));
   if (glassAbove)
     builder.instance(builder.mesh(game::primitives::box({4, 0.02f, 4})),
-                     builder.material(glass({0.5f, 0.5f, 0.5f})), at({0, 1.5f, 0}));
+                     builder.material(glassMaterial({0.5f, 0.5f, 0.5f})), at({0, 1.5f, 0}));
   builder.light(light);
   builder.scene.exposureProbes = true;
   return builder.scene;

@@ -25,6 +25,22 @@ struct SceneBuilder {
   void light(const scene::LightDesc& light) { scene.lights.push_back(light); }
 };
 
+// Glass of linear transmittance `tint` per front face.
+inline scene::MaterialDesc glassMaterial(const glm::vec3& tint) {
+  scene::MaterialDesc material;
+  material.kind = scene::MaterialKind::Glass;
+  material.glassTint = tint;
+  return material;
+}
+
+// A perfect mirror of reflectance times tint `tint`.
+inline scene::MaterialDesc mirrorMaterial(const glm::vec3& tint = glm::vec3(1.0f)) {
+  scene::MaterialDesc material;
+  material.kind = scene::MaterialKind::Mirror;
+  material.mirrorTint = tint;
+  return material;
+}
+
 inline glm::mat4 at(const glm::vec3& position) {
   return glm::translate(glm::mat4(1.0f), position);
 }
