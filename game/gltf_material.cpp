@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 #include "game/gltf_checks.hpp"
@@ -51,15 +52,26 @@ class MaterialMapper {
         result.emissive *= float(scale);
       }
     }
-    if (pbr.baseColorTexture.index >= 0) {
-      result.colorTexture =
-          texture(pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, "baseColorTexture",
-                  /*srgb=*/true);
+    result.alphaBlend = material.alphaMode == "BLEND";
+    if (!std::isfinite(material.normalTexture.scale) ||
+        std::abs(material.normalTexture.scale) > 1e3) {
+      fail(file_, label_ + " normalTexture scale must be a number in [-1000, 1000]");
     }
-    if (material.normalTexture.index >= 0) {
-      result.normalTexture = texture(material.normalTexture.index, material.normalTexture.texCoord,
-                                     "normalTexture", /*srgb=*/false);
-    }
+    result.normalScale = float(material.normalTexture.scale);
+    result.occlusionStrength =
+        factor(material.occlusionTexture.strength, "occlusionTexture strength");
+    using scene::TextureRole;
+    result.colorTexture = texture(pbr.baseColorTexture, TextureRole::BaseColor, "baseColorTexture",
+                                  /*srgb=*/true, result);
+    result.normalTexture = texture(material.normalTexture, TextureRole::Normal, "normalTexture",
+                                   /*srgb=*/false, result);
+    result.metallicRoughnessTexture =
+        texture(pbr.metallicRoughnessTexture, TextureRole::MetallicRoughness,
+                "metallicRoughnessTexture", /*srgb=*/false, result);
+    result.occlusionTexture = texture(material.occlusionTexture, TextureRole::Occlusion,
+                                      "occlusionTexture", /*srgb=*/false, result);
+    result.emissiveTexture = texture(material.emissiveTexture, TextureRole::Emissive,
+                                     "emissiveTexture", /*srgb=*/true, result);
     return result;
   }
 
@@ -80,8 +92,67 @@ class MaterialMapper {
     return result;
   }
 
-  scene::TextureDesc texture(int textureIndex, int texCoord, const std::string& role, bool srgb) {
-    const std::string where = label_ + " " + role;
+  // The texture `info` names (none when it names none) and, in result.textureMappings, where
+  // it is sampled.
+  template <typename TextureInfo>
+  std::optional<scene::TextureDesc> texture(const TextureInfo& info, scene::TextureRole role,
+                                            const std::string& roleName, bool srgb,
+                                            GltfMaterial& result) {
+    if (info.index < 0) return std::nullopt;
+    const std::string where = label_ + " " + roleName;
+    scene::TextureMapping& mapping = result.textureMappings[static_cast<std::size_t>(role)];
+    int texCoord = info.texCoord;
+    if (const auto transform = info.extensions.find("KHR_texture_transform");
+        transform != info.extensions.end()) {
+      texCoord = textureTransform(transform->second, where, texCoord, mapping);
+    }
+    if (texCoord < 0 || texCoord > 1) {
+      warnings_.push_back(file_.string() + ": " + where + " uses TEXCOORD_" +
+                          std::to_string(texCoord) +
+                          "; only TEXCOORD_0 and TEXCOORD_1 are read, so TEXCOORD_0 is used");
+      texCoord = 0;
+    }
+    mapping.uvSet = static_cast<uint32_t>(texCoord);
+    return decoded(info.index, where, srgb);
+  }
+
+  // Reads KHR_texture_transform into `mapping`; returns the UV set it names (or `texCoord`).
+  int textureTransform(const tinygltf::Value& transform, const std::string& where, int texCoord,
+                       scene::TextureMapping& mapping) const {
+    const std::string label = where + " KHR_texture_transform";
+    if (!transform.IsObject()) fail(file_, label + " must be an object");
+    auto pair = [&](const char* key, glm::vec2 fallback) {
+      if (!transform.Has(key)) return fallback;
+      const tinygltf::Value& value = transform.Get(key);
+      if (!value.IsArray() || value.ArrayLen() != 2 || !finiteNumber(value.Get(0)) ||
+          !finiteNumber(value.Get(1))) {
+        fail(file_, label + " " + key + " must be an array of 2 numbers in [-1e6, 1e6]");
+      }
+      return glm::vec2(float(value.Get(0).GetNumberAsDouble()),
+                       float(value.Get(1).GetNumberAsDouble()));
+    };
+    mapping.offset = pair("offset", glm::vec2(0.0f));
+    mapping.scale = pair("scale", glm::vec2(1.0f));
+    if (transform.Has("rotation")) {
+      if (!finiteNumber(transform.Get("rotation")))
+        fail(file_, label + " rotation must be a number in [-1e6, 1e6] (radians)");
+      mapping.rotationRadians = float(transform.Get("rotation").GetNumberAsDouble());
+    }
+    if (transform.Has("texCoord")) {
+      const tinygltf::Value& value = transform.Get("texCoord");
+      if (!value.IsInt() || value.GetNumberAsInt() < 0)
+        fail(file_, label + " texCoord must be a whole number >= 0");
+      texCoord = value.GetNumberAsInt();
+    }
+    return texCoord;
+  }
+
+  static bool finiteNumber(const tinygltf::Value& value) {
+    return value.IsNumber() && std::isfinite(value.GetNumberAsDouble()) &&
+           std::abs(value.GetNumberAsDouble()) <= 1e6;
+  }
+
+  scene::TextureDesc decoded(int textureIndex, const std::string& where, bool srgb) {
     if (!validIndex(textureIndex, model_.textures)) {
       fail(file_,
            where + " refers to texture " + std::to_string(textureIndex) + ", which does not exist");
@@ -90,10 +161,6 @@ class MaterialMapper {
     if (!validIndex(imageIndex, model_.images)) {
       fail(file_, where + " uses texture " + std::to_string(textureIndex) +
                       ", which has no PNG or JPEG image");
-    }
-    if (texCoord != 0) {
-      warnings_.push_back(file_.string() + ": " + where + " uses TEXCOORD_" +
-                          std::to_string(texCoord) + "; only TEXCOORD_0 is read, so it is used");
     }
     const tinygltf::Image& image = model_.images[static_cast<std::size_t>(imageIndex)];
     const std::string imageLabel =

@@ -11,7 +11,8 @@
 namespace game::gltf {
 
 // `materialIndex` must be valid. Textures are decoded by decodeTexture, with its limits; a
-// texture that asks for another UV set than TEXCOORD_0 adds a line to `warnings`.
+// texture that asks for a UV set past TEXCOORD_1 adds a line to `warnings` (and reads
+// TEXCOORD_0). KHR_texture_transform moves a texture and may pick its UV set.
 GltfMaterial mapMaterial(const tinygltf::Model& model, const std::filesystem::path& file,
                          int materialIndex, std::vector<std::string>& warnings);
 

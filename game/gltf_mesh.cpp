@@ -18,6 +18,25 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A BLEND surface is drawn as glass, which is a whole entity's kind: in a model that has opaque
+// materials too, the BLEND ones are drawn opaque, with a warning saying how to keep them.
+void keepBlendWhereAlone(std::vector<GltfMaterial>& materials, const fs::path& file,
+                         std::vector<std::string>& warnings) {
+  const auto blends = [](const GltfMaterial& material) { return material.alphaBlend; };
+  if (std::all_of(materials.begin(), materials.end(), blends) ||
+      std::none_of(materials.begin(), materials.end(), blends)) {
+    return;
+  }
+  for (GltfMaterial& material : materials) {
+    if (!material.alphaBlend) continue;
+    warnings.push_back(file.string() + ": material \"" + material.name +
+                       "\" has alphaMode BLEND next to opaque materials in the same mesh: drawn "
+                       "opaque; give its part an entity of its own (\"node\" or \"mesh\") to "
+                       "draw it transparent");
+    material.alphaBlend = false;
+  }
+}
+
 using gltf::fail;
 using gltf::validIndex;
 
@@ -165,6 +184,7 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
       result.materials.push_back(gltf::mapMaterial(model, file, materialIndex, result.warnings));
     }
   }
+  keepBlendWhereAlone(result.materials, file, result.warnings);
 
   // The model first, as given, then each buffer and image file in the order tinygltf read them.
   result.filesRead.push_back(file);

@@ -1,5 +1,6 @@
 #pragma once
 // Loads a glTF 2.0 model (.gltf or .glb) for use as a level mesh.
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -18,10 +19,18 @@ struct GltfMaterial {
   float metallic = 1.0f;      // glTF's default metallicFactor
   float alpha = 1.0f;         // baseColorFactor's alpha
   float alphaCutoff = 0.0f;   // alphaMode MASK: its alphaCutoff; 0: opaque
+  bool alphaBlend = false;    // alphaMode BLEND
   float roughness = 1.0f;
-  glm::vec3 emissive{0.0f};                         // linear
-  std::optional<scene::TextureDesc> colorTexture;   // srgb = true
-  std::optional<scene::TextureDesc> normalTexture;  // srgb = false
+  glm::vec3 emissive{0.0f};  // linear, times KHR_materials_emissive_strength
+  float normalScale = 1.0f;
+  float occlusionStrength = 1.0f;
+  std::optional<scene::TextureDesc> colorTexture;              // srgb = true
+  std::optional<scene::TextureDesc> normalTexture;             // srgb = false
+  std::optional<scene::TextureDesc> metallicRoughnessTexture;  // srgb = false
+  std::optional<scene::TextureDesc> occlusionTexture;          // srgb = false
+  std::optional<scene::TextureDesc> emissiveTexture;           // srgb = true
+  // Each texture's UV set and KHR_texture_transform, by scene::TextureRole.
+  std::array<scene::TextureMapping, scene::kTextureRoles> textureMappings{};
 };
 
 // Which part of the model to load; at most one of the two may be set. Neither: every node of

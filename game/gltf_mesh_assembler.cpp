@@ -161,6 +161,14 @@ void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
     expectOnePerPosition(uvs.size(), positions.size(), label, "UVs");
   }
 
+  // A second set for textures that ask for it; without one they read the first.
+  std::vector<glm::vec2> secondUvs;
+  if (const auto uvAttribute = primitive.attributes.find("TEXCOORD_1");
+      uvAttribute != primitive.attributes.end()) {
+    secondUvs = readUvs(uvAttribute->second, label + " TEXCOORD_1");
+    expectOnePerPosition(secondUvs.size(), positions.size(), label, "second UVs");
+  }
+
   std::vector<glm::vec4> colors;
   if (const auto colorAttribute = primitive.attributes.find("COLOR_0");
       colorAttribute != primitive.attributes.end()) {
@@ -196,6 +204,7 @@ void MeshAssembler::appendPrimitive(const tinygltf::Primitive& primitive,
       vertices[i].normal = normalizedOrUp(glm::vec3(normalTransform * glm::dvec3(normals[i])));
     }
     if (!uvs.empty()) vertices[i].uv = uvs[i];
+    vertices[i].uv1 = secondUvs.empty() ? vertices[i].uv : secondUvs[i];
     if (!colors.empty()) vertices[i].color = colors[i];
   }
 

@@ -18,16 +18,12 @@ std::string joined(const std::set<std::string>& names) {
   return text;
 }
 
-std::string materialLabel(const tinygltf::Material& material, std::size_t index) {
-  return material.name.empty() ? "material " + std::to_string(index)
-                               : "material \"" + material.name + "\"";
-}
-
 }  // namespace
 
 void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesystem::path& file,
                               std::vector<std::string>& warnings) {
-  const std::set<std::string> supported = {"KHR_materials_emissive_strength"};
+  const std::set<std::string> supported = {"KHR_materials_emissive_strength",
+                                           "KHR_texture_transform"};
   for (const std::string& required : model.extensionsRequired) {
     if (!supported.count(required))
       fail(file, "requires the extension " + required +
@@ -57,19 +53,16 @@ void checkUnsupportedFeatures(const tinygltf::Model& model, const std::filesyste
     }
   }
   if (morphTargets) warn("has morph targets: not supported; drawn without them");
-  for (std::size_t i = 0; i < model.materials.size(); ++i) {
-    const tinygltf::Material& material = model.materials[i];
-    const std::string label = materialLabel(material, i);
-    if (material.alphaMode == "BLEND")
-      warn(label + " has alphaMode BLEND: not supported; drawn opaque (MASK is)");
-    if (material.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-      warn(label +
-           " has a metallicRoughnessTexture: not supported; its metallic and roughness "
-           "factors are used alone");
-    if (material.occlusionTexture.index >= 0)
-      warn(label + " has an occlusionTexture: not supported; ignored");
-    if (material.emissiveTexture.index >= 0)
-      warn(label + " has an emissiveTexture: not supported; its emissiveFactor is used alone");
+  std::set<std::string> wrapModes;
+  for (const tinygltf::Sampler& sampler : model.samplers) {
+    for (const int wrap : {sampler.wrapS, sampler.wrapT}) {
+      if (wrap == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) wrapModes.insert("CLAMP_TO_EDGE");
+      if (wrap == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) wrapModes.insert("MIRRORED_REPEAT");
+    }
+  }
+  if (!wrapModes.empty()) {
+    warn("has texture samplers that wrap with " + joined(wrapModes) +
+         ": not supported; every texture repeats (REPEAT)");
   }
 }
 

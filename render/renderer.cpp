@@ -26,6 +26,13 @@ namespace {
 
 static_assert(sizeof(scene::Vertex) == VERTEX_FLOATS * sizeof(float),
               "vertex layout matches shaders");
+static_assert(scene::kTextureRoles == TEXTURE_ROLES &&
+                  uint32_t(scene::TextureRole::Emissive) == TEXTURE_EMISSIVE &&
+                  uint32_t(scene::TextureRole::Occlusion) == TEXTURE_OCCLUSION &&
+                  uint32_t(scene::TextureRole::MetallicRoughness) == TEXTURE_METALLIC_ROUGHNESS &&
+                  uint32_t(scene::TextureRole::Normal) == TEXTURE_NORMAL &&
+                  uint32_t(scene::TextureRole::BaseColor) == TEXTURE_BASE_COLOR,
+              "texture roles match shaders");
 
 constexpr VkShaderStageFlags kRayStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
@@ -55,6 +62,45 @@ bool alphaMasked(const scene::SceneDesc& scene, const scene::InstanceDesc& insta
     if (material < scene.materials.size() && scene.materials[material].alphaCutoff > 0.0f)
       return true;
   return false;
+}
+
+// Row r of KHR_texture_transform's offset x rotation x scale, for uv' = dot(row, (uv, 1)).
+std::array<glm::vec4, 2> transformRows(const scene::TextureMapping& mapping) {
+  const float cosine = std::cos(mapping.rotationRadians);
+  const float sine = std::sin(mapping.rotationRadians);
+  return {glm::vec4(cosine * mapping.scale.x, sine * mapping.scale.y, mapping.offset.x, 0.0f),
+          glm::vec4(-sine * mapping.scale.x, cosine * mapping.scale.y, mapping.offset.y, 0.0f)};
+}
+
+template <typename TextureSlot>
+gpu::GpuMaterial toGpuMaterial(const scene::MaterialDesc& material,
+                               const TextureSlot& textureSlot) {
+  gpu::GpuMaterial result{};
+  result.baseColorSpecular = glm::vec4(material.baseColor, material.specular);
+  result.emissiveRoughness = glm::vec4(material.emissive, material.roughness);
+  result.mirrorTint = glm::vec4(material.mirrorTint, material.metallic);
+  result.glassTint = glm::vec4(
+      material.glassTint,
+      material.alphaCutoff > 0.0f ? material.alphaCutoff / std::max(material.alpha, 1e-6f) : 0.0f);
+  uint32_t secondUvSet = 0;
+  for (uint32_t role = 0; role < scene::kTextureRoles; ++role) {
+    const scene::TextureMapping& mapping = material.textureMappings[role];
+    if (mapping.uvSet == 1) secondUvSet |= 1u << role;
+    const std::array<glm::vec4, 2> rows = transformRows(mapping);
+    result.textureTransforms[2 * role] = rows[0];
+    result.textureTransforms[2 * role + 1] = rows[1];
+  }
+  result.kindShading =
+      glm::uvec4(static_cast<uint32_t>(material.kind),
+                 material.metallicRoughness ? SHADING_METALLIC_ROUGHNESS : SHADING_BLINN_PHONG,
+                 secondUvSet, material.alphaBlend ? MATERIAL_FLAG_ALPHA_BLEND : 0u);
+  result.textureSlots[0] = glm::uvec4(
+      textureSlot(material.colorTexture), textureSlot(material.normalTexture),
+      textureSlot(material.metallicRoughnessTexture), textureSlot(material.occlusionTexture));
+  result.textureSlots[1] = glm::uvec4(textureSlot(material.emissiveTexture), 0u, 0u, 0u);
+  result.textureFactors =
+      glm::vec4(material.alpha, material.normalScale, material.occlusionStrength, 0.0f);
+  return result;
 }
 
 gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
@@ -139,19 +185,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     return static_cast<uint32_t>(index + 1);
   };
   std::vector<gpu::GpuMaterial> gpuMaterials;
-  for (const scene::MaterialDesc& material : scene.materials) {
-    gpuMaterials.push_back(
-        {glm::vec4(material.baseColor, material.specular),
-         glm::vec4(material.emissive, material.roughness),
-         glm::vec4(material.mirrorTint, material.metallic),
-         glm::vec4(material.glassTint, material.alphaCutoff > 0.0f
-                                           ? material.alphaCutoff / std::max(material.alpha, 1e-6f)
-                                           : 0.0f),
-         glm::uvec4(
-             static_cast<uint32_t>(material.kind), textureSlot(material.colorTexture),
-             textureSlot(material.normalTexture),
-             material.metallicRoughness ? SHADING_METALLIC_ROUGHNESS : SHADING_BLINN_PHONG)});
-  }
+  for (const scene::MaterialDesc& material : scene.materials)
+    gpuMaterials.push_back(toGpuMaterial(material, textureSlot));
   for (const scene::LightDesc& light : scene.lights) {
     gpuLights_.push_back(toGpuLight(light));
     lightRadiances_.push_back(glm::vec3(gpuLights_.back().radianceRadius));

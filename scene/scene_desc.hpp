@@ -1,5 +1,6 @@
 #pragma once
 // Plain descriptions that cross from the game into the renderer. No Vulkan here.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@ struct Vertex {
   glm::vec3 normal{0.0f, 1.0f, 0.0f};
   glm::vec2 uv{0.0f};     // texture coordinates; (0, 0) top-left of the image, as in glTF
   glm::vec4 color{1.0f};  // linear, multiplies the material's base colour (glTF COLOR_0)
+  glm::vec2 uv1{0.0f};    // a second set (glTF TEXCOORD_1), for textures that ask for it
 };
 
 // A decoded texture, RGBA8, rows top to bottom.
@@ -39,6 +41,25 @@ enum class MaterialKind : uint32_t {
   Glass = 2,    // transmittance glassTint per front face crossed, no refraction
 };
 
+// What a material's texture is for (glTF's texture slots); indexes MaterialDesc::textureMappings.
+enum class TextureRole : uint32_t {
+  BaseColor = 0,
+  Normal = 1,
+  MetallicRoughness = 2,
+  Occlusion = 3,
+  Emissive = 4,
+};
+constexpr uint32_t kTextureRoles = 5;
+
+// Where a texture is sampled: which UV set, moved by glTF's KHR_texture_transform,
+// uv' = offset + rotate(rotation) (scale * uv), rotation counter-clockwise in UV space.
+struct TextureMapping {
+  uint32_t uvSet = 0;  // 0: Vertex::uv, 1: Vertex::uv1
+  glm::vec2 offset{0.0f};
+  float rotationRadians = 0.0f;
+  glm::vec2 scale{1.0f};
+};
+
 // Colours are linear (already converted from the sRGB the author wrote).
 struct MaterialDesc {
   MaterialKind kind = MaterialKind::Diffuse;
@@ -52,12 +73,23 @@ struct MaterialDesc {
   // glTF alphaMode MASK: a surface point whose alpha (the colour texture's alpha times `alpha`
   // times the vertex colour's) is below the cutoff is a hole for every ray. 0: opaque.
   float alphaCutoff = 0.0f;
-  float alpha = 1.0f;          // the base colour factor's alpha
+  float alpha = 1.0f;  // the base colour factor's alpha
+  // glTF alphaMode BLEND (kind Glass): a non-refracting tinted transparency whose tint at a
+  // point is mix(white, base colour x texture x vertex colour, their alpha x `alpha`), for
+  // light crossing either face; glassTint holds the tint of the factors alone.
+  bool alphaBlend = false;
   glm::vec3 emissive{0.0f};    // emitted radiance, added unlit
   glm::vec3 mirrorTint{1.0f};  // Mirror: reflectance times tint, linear
   glm::vec3 glassTint{1.0f};   // Glass: linear transmittance per front face
   int32_t colorTexture = -1;   // index into SceneDesc::textures (sRGB), multiplies baseColor
   int32_t normalTexture = -1;  // index into SceneDesc::textures (linear, tangent space)
+  float normalScale = 1.0f;    // scales the normal map's x and y (glTF normalTexture.scale)
+  // glTF's metallicRoughnessTexture (linear; green multiplies roughness, blue metallic).
+  int32_t metallicRoughnessTexture = -1;
+  int32_t occlusionTexture = -1;  // linear; red darkens the ambient light by occlusionStrength
+  float occlusionStrength = 1.0f;
+  int32_t emissiveTexture = -1;                                 // sRGB, multiplies emissive
+  std::array<TextureMapping, kTextureRoles> textureMappings{};  // by TextureRole
 };
 
 struct InstanceDesc {

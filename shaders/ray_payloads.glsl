@@ -16,8 +16,12 @@ struct SurfaceHit {
   float hitT;            // < 0: the ray missed everything
   vec3 geometricNormal;  // world space, unit
   uint material;
-  vec3 albedo;           // linear base colour times the colour texture
+  vec3 albedo;           // linear base colour times the colour texture and vertex colour
   uint instance;
+  vec3 emissive;         // the material's, times its emissive texture
+  float roughness;       // the material's, times its metallic-roughness texture's green
+  float metallic;        // the material's, times that texture's blue
+  float occlusion;       // what reaches of the ambient light: 1 - strength (1 - texture red)
 };
 
 // A ray through an edge shared by two triangles of one surface may report both; hits of the

@@ -79,8 +79,8 @@ using uint = uint32_t;
 #define TONEMAP_IDENTITY 0u
 #define TONEMAP_ACES 1u
 
-// Floats per vertex in the vertex buffer: position xyz, normal xyz, uv, colour rgba.
-#define VERTEX_FLOATS 12
+// Floats per vertex in the vertex buffer: position xyz, normal xyz, uv, colour rgba, uv1.
+#define VERTEX_FLOATS 14
 
 struct FrameUniforms {
   vec4 cameraPosition;          // xyz: the camera in render space (world minus camera): 0
@@ -113,6 +113,17 @@ struct GpuInstance {
   vec4 previousFromCurrent[3];
 };
 
+// A material's textures, by role (scene::TextureRole): index into GpuMaterial's arrays.
+#define TEXTURE_BASE_COLOR 0u
+#define TEXTURE_NORMAL 1u
+#define TEXTURE_METALLIC_ROUGHNESS 2u
+#define TEXTURE_OCCLUSION 3u
+#define TEXTURE_EMISSIVE 4u
+#define TEXTURE_ROLES 5
+
+// GpuMaterial.kindShading.w bits.
+#define MATERIAL_FLAG_ALPHA_BLEND 1u  // glass whose tint comes from glTF BLEND colour and alpha
+
 struct GpuMaterial {
   vec4 baseColorSpecular;  // rgb: linear albedo, a: specular weight
   vec4 emissiveRoughness;  // rgb: linear emitted radiance, a: roughness
@@ -120,8 +131,15 @@ struct GpuMaterial {
   // rgb: transmittance per front face (MATERIAL_GLASS); a: the alpha cutoff divided by the
   // base colour's alpha factor, compared with texture alpha x vertex alpha (0: opaque)
   vec4 glassTint;
-  // x: MATERIAL_*, y: colour texture + 1, z: normal map + 1 (0: none), w: SHADING_*
-  uvec4 kindTextures;
+  // x: MATERIAL_*, y: SHADING_*, z: bit r set when texture role r reads the second UV set,
+  // w: MATERIAL_FLAG_* bits
+  uvec4 kindShading;
+  // Texture + 1 (0: none) of role r at [r / 4][r % 4].
+  uvec4 textureSlots[2];
+  vec4 textureFactors;  // x: base colour alpha, y: normal scale, z: occlusion strength
+  // Role r's KHR_texture_transform as two rows: uv' = (dot([2r].xyz, (uv, 1)),
+  // dot([2r + 1].xyz, (uv, 1))).
+  vec4 textureTransforms[2 * TEXTURE_ROLES];
 };
 
 struct GpuLight {

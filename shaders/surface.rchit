@@ -15,7 +15,7 @@ hitAttributeEXT vec2 barycentrics;
 // positions and UVs. +Y in the map points towards the top of the image (decreasing v), as in
 // glTF.
 vec3 applyNormalMap(vec3 normal, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, vec2 uv2,
-                    vec2 uv, uint texture) {
+                    vec2 uv, uint texture, float scale) {
   vec3 edge1 = p1 - p0, edge2 = p2 - p0;
   vec2 duv1 = uv1 - uv0, duv2 = uv2 - uv0;
   float determinant = duv1.x * duv2.y - duv2.x * duv1.y;
@@ -30,6 +30,7 @@ vec3 applyNormalMap(vec3 normal, vec3 p0, vec3 p1, vec3 p2, vec2 uv0, vec2 uv1, 
   vec3 up = normalize(cross(n, tangent));
   if (dot(up, -alongV) < 0.0) up = -up;  // mirrored UVs
   vec3 mapped = textureLod(textures[nonuniformEXT(texture)], uv, 0.0).xyz * 2.0 - 1.0;
+  mapped.xy *= scale;
   return tangent * mapped.x + up * mapped.y + n * mapped.z;
 }
 
@@ -42,21 +43,37 @@ void main() {
   GpuMaterial material = materials[materialIndex];
 
   vec3 p0 = fetchVec3(v0, 0u), p1 = fetchVec3(v1, 0u), p2 = fetchVec3(v2, 0u);
-  vec2 uv0 = fetchUv(v0), uv1 = fetchUv(v1), uv2 = fetchUv(v2);
-  vec2 uv = uv0 * weights.x + uv1 * weights.y + uv2 * weights.z;
+  TrianglePoint point = interpolatePoint(corners, weights);
   vec3 objectGeometric = cross(p1 - p0, p2 - p0);
   vec3 objectShading = fetchVec3(v0, 3u) * weights.x + fetchVec3(v1, 3u) * weights.y +
                        fetchVec3(v2, 3u) * weights.z;
-  if (material.kindTextures.z > 0u) {
-    objectShading = applyNormalMap(objectShading, p0, p1, p2, uv0, uv1, uv2, uv,
-                                   material.kindTextures.z - 1u);
+  uint normalMap = textureSlot(material, TEXTURE_NORMAL);
+  if (normalMap > 0u) {
+    // The tangent frame follows the normal map's own UVs (its set and transform).
+    vec2 uv0 = roleUv(material, TEXTURE_NORMAL, fetchUv(v0), fetchUv1(v0));
+    vec2 uv1 = roleUv(material, TEXTURE_NORMAL, fetchUv(v1), fetchUv1(v1));
+    vec2 uv2 = roleUv(material, TEXTURE_NORMAL, fetchUv(v2), fetchUv1(v2));
+    objectShading = applyNormalMap(objectShading, p0, p1, p2, uv0, uv1, uv2,
+                                   roleUv(material, TEXTURE_NORMAL, point.uv0, point.uv1),
+                                   normalMap - 1u, material.textureFactors.y);
   }
   // Vertex colours (white unless a glTF model gave COLOR_0) multiply the base colour.
-  vec3 albedo = material.baseColorSpecular.rgb *
-                (fetchColor(v0).rgb * weights.x + fetchColor(v1).rgb * weights.y +
-                 fetchColor(v2).rgb * weights.z);
-  if (material.kindTextures.y > 0u) {
-    albedo *= textureLod(textures[nonuniformEXT(material.kindTextures.y - 1u)], uv, 0.0).rgb;
+  vec3 albedo = material.baseColorSpecular.rgb * point.color.rgb *
+                sampleRole(material, TEXTURE_BASE_COLOR, point.uv0, point.uv1).rgb;
+  vec3 emissive = material.emissiveRoughness.rgb;
+  float roughness = material.emissiveRoughness.a;
+  float metallic = material.mirrorTint.a;
+  float occlusion = 1.0;
+  if (textureSlot(material, TEXTURE_EMISSIVE) > 0u)
+    emissive *= sampleRole(material, TEXTURE_EMISSIVE, point.uv0, point.uv1).rgb;
+  if (textureSlot(material, TEXTURE_METALLIC_ROUGHNESS) > 0u) {
+    vec4 texel = sampleRole(material, TEXTURE_METALLIC_ROUGHNESS, point.uv0, point.uv1);
+    roughness *= texel.g;
+    metallic *= texel.b;
+  }
+  if (textureSlot(material, TEXTURE_OCCLUSION) > 0u) {
+    float texel = sampleRole(material, TEXTURE_OCCLUSION, point.uv0, point.uv1).r;
+    occlusion = 1.0 + material.textureFactors.z * (texel - 1.0);
   }
 
   // Normals transform by the inverse transpose: row-vector times world-to-object.
@@ -74,4 +91,8 @@ void main() {
   hit.material = materialIndex;
   hit.albedo = albedo;
   hit.instance = uint(gl_InstanceCustomIndexEXT);
+  hit.emissive = emissive;
+  hit.roughness = roughness;
+  hit.metallic = metallic;
+  hit.occlusion = occlusion;
 }

@@ -11,6 +11,11 @@ vec2 fetchUv(uint vertex) {
   return vec2(vertexFloats[base], vertexFloats[base + 1u]);
 }
 
+vec2 fetchUv1(uint vertex) {
+  uint base = vertex * VERTEX_FLOATS + 12u;
+  return vec2(vertexFloats[base], vertexFloats[base + 1u]);
+}
+
 vec4 fetchColor(uint vertex) {
   uint base = vertex * VERTEX_FLOATS + 8u;
   return vec4(vertexFloats[base], vertexFloats[base + 1u], vertexFloats[base + 2u],
@@ -30,4 +35,42 @@ uvec3 triangleVertices(uvec4 geometry, uint primitive) {
   uint firstIndex = geometry.x + 3u * primitive;
   return uvec3(indices[firstIndex], indices[firstIndex + 1u], indices[firstIndex + 2u]) +
          geometry.y;
+}
+
+// A texture role's texture + 1 (0: the material has none).
+uint textureSlot(GpuMaterial material, uint role) {
+  return material.textureSlots[role >> 2u][role & 3u];
+}
+
+// Where role `role` samples, given the point's two UV sets: its set, moved by its transform.
+vec2 roleUv(GpuMaterial material, uint role, vec2 uv0, vec2 uv1) {
+  vec3 uv = vec3(((material.kindShading.z >> role) & 1u) != 0u ? uv1 : uv0, 1.0);
+  return vec2(dot(material.textureTransforms[2u * role].xyz, uv),
+              dot(material.textureTransforms[2u * role + 1u].xyz, uv));
+}
+
+// Role `role`'s texel at the point (white when the material has no such texture).
+vec4 sampleRole(GpuMaterial material, uint role, vec2 uv0, vec2 uv1) {
+  uint slot = textureSlot(material, role);
+  if (slot == 0u) return vec4(1.0);
+  return textureLod(textures[nonuniformEXT(slot - 1u)], roleUv(material, role, uv0, uv1), 0.0);
+}
+
+// A point of a triangle: its barycentric weights' interpolation of the vertices' UV sets and
+// colour.
+struct TrianglePoint {
+  vec2 uv0;
+  vec2 uv1;
+  vec4 color;
+};
+
+TrianglePoint interpolatePoint(uvec3 corners, vec3 weights) {
+  TrianglePoint point;
+  point.uv0 = fetchUv(corners.x) * weights.x + fetchUv(corners.y) * weights.y +
+              fetchUv(corners.z) * weights.z;
+  point.uv1 = fetchUv1(corners.x) * weights.x + fetchUv1(corners.y) * weights.y +
+              fetchUv1(corners.z) * weights.z;
+  point.color = fetchColor(corners.x) * weights.x + fetchColor(corners.y) * weights.y +
+                fetchColor(corners.z) * weights.z;
+  return point;
 }

@@ -370,11 +370,23 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
   primitive["targets"] = {
       {{"POSITION", gltf.addAccessor(packedVec3s(kTriangle), kFloat, 3, "VEC3")}}};
   primitive["material"] = 0;
-  gltf.addMesh("tri", {primitive});
-  gltf.document["materials"] = {{{"name", "leaf"}, {"alphaMode", "BLEND"}}};
+  json bark = gltf.primitive(kTriangle);
+  bark["material"] = 1;
+  gltf.addMesh("tri", {primitive, bark});
+  // A BLEND material beside an opaque one in one mesh, a texture on a third UV set, a sampler
+  // that clamps.
+  gltf.document["materials"] = {
+      {{"name", "leaf"},
+       {"alphaMode", "BLEND"},
+       {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}, {"texCoord", 2}}}}}},
+      {{"name", "bark"}}};
+  gltf.document["textures"] = {{{"source", 0}, {"sampler", 0}}};
+  gltf.document["samplers"] = {{{"wrapS", 33071}, {"wrapT", 10497}}};
+  gltf.document["images"] = {{{"uri", "data:image/png;base64," + base64(tinyPng())}}};
   gltf.document["cameras"] = {
       {{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}};
-  gltf.document["extensionsUsed"] = {"KHR_materials_clearcoat", "EXT_fancy"};
+  gltf.document["extensionsUsed"] = {"KHR_materials_clearcoat", "EXT_fancy",
+                                     "KHR_texture_transform"};
   gltf.write(root_ / "extras.gltf");
   const game::GltfModel model = game::loadGltfModel(root_ / "extras.gltf", root_);
   const std::string file = (root_ / "extras.gltf").string() + ": ";
@@ -384,15 +396,21 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
                        "does not support: ignored",
                 file + "has 1 camera: ignored (the level's camera is used)",
                 file + "has morph targets: not supported; drawn without them",
-                file + "material \"leaf\" has alphaMode BLEND: not supported; drawn opaque (MASK "
-                       "is)"}));
+                file + "has texture samplers that wrap with CLAMP_TO_EDGE: not supported; every "
+                       "texture repeats (REPEAT)",
+                file + "material \"leaf\" baseColorTexture uses TEXCOORD_2; only TEXCOORD_0 and "
+                       "TEXCOORD_1 are read, so TEXCOORD_0 is used",
+                file + "material \"leaf\" has alphaMode BLEND next to opaque materials in the "
+                       "same mesh: drawn opaque; give its part an entity of its own (\"node\" or "
+                       "\"mesh\") to draw it transparent"}));
+  EXPECT_FALSE(model.materials.at(0).alphaBlend);
 
   gltf.document["extensionsRequired"] = {"KHR_draco_mesh_compression"};
   gltf.write(root_ / "draco.gltf");
   EXPECT_EQ(loadError(root_ / "draco.gltf"),
             (root_ / "draco.gltf").string() +
                 ": requires the extension KHR_draco_mesh_compression, which Sightline cannot "
-                "honour (it supports KHR_materials_emissive_strength)");
+                "honour (it supports KHR_materials_emissive_strength, KHR_texture_transform)");
 }
 
 // A one-triangle model whose material uses image 0 as its base colour texture.

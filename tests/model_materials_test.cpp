@@ -12,6 +12,7 @@
 
 #include "game/level_loader.hpp"
 #include "gltf_builder.hpp"
+#include "scene/color.hpp"
 #include "vulkan_fixture.hpp"
 
 namespace {
@@ -19,23 +20,65 @@ namespace {
 namespace fs = std::filesystem;
 
 // Two unit quads facing +Z side by side, x in [-1, 0] and [0, 1]: primitive 0 with material
-// "red", primitive 1 with "green", both in one mesh.
-void writeTwoMaterialModel(const fs::path& path) {
+// `left`, primitive 1 with `right`, both in one mesh.
+void writePairModel(const fs::path& path, const nlohmann::json& left, const nlohmann::json& right) {
   test::GltfBuilder gltf;
   const std::vector<uint16_t> quad = {0, 1, 2, 0, 2, 3};
-  nlohmann::json left =
+  nlohmann::json leftQuad =
       gltf.primitive({{-1, -0.5f, 0}, {0, -0.5f, 0}, {0, 0.5f, 0}, {-1, 0.5f, 0}}, quad);
-  left["material"] = 0;
-  nlohmann::json right =
+  leftQuad["material"] = 0;
+  nlohmann::json rightQuad =
       gltf.primitive({{0, -0.5f, 0}, {1, -0.5f, 0}, {1, 0.5f, 0}, {0, 0.5f, 0}}, quad);
-  right["material"] = 1;
-  gltf.addMesh("pair", {left, right});
-  gltf.document["materials"] = {
-      {{"name", "red"},
-       {"pbrMetallicRoughness", {{"baseColorFactor", {1, 0, 0, 1}}, {"metallicFactor", 0}}}},
-      {{"name", "green"},
-       {"pbrMetallicRoughness", {{"baseColorFactor", {0, 1, 0, 1}}, {"metallicFactor", 0}}}}};
+  rightQuad["material"] = 1;
+  gltf.addMesh("pair", {leftQuad, rightQuad});
+  gltf.document["materials"] = {left, right};
   gltf.write(path);
+}
+
+// A dielectric glTF material of one colour.
+nlohmann::json plainMaterial(const std::string& name, const std::vector<double>& color) {
+  return {{"name", name},
+          {"pbrMetallicRoughness", {{"baseColorFactor", color}, {"metallicFactor", 0}}}};
+}
+
+void writeTwoMaterialModel(const fs::path& path) {
+  writePairModel(path, plainMaterial("red", {1, 0, 0, 1}), plainMaterial("green", {0, 1, 0, 1}));
+}
+
+// One quad across the view, x in [-1, 1] and y in [-0.5, 0.5], with UVs u = (x + 1) / 2,
+// v = 0.5 - y and a second set (TEXCOORD_1) whose u runs the other way; texture i shows
+// image i (PNG bytes).
+void writeTexturedQuadModel(const fs::path& path, const nlohmann::json& material,
+                            const std::vector<std::string>& images) {
+  test::GltfBuilder gltf;
+  nlohmann::json quad = gltf.primitive({{-1, -0.5f, 0}, {1, -0.5f, 0}, {1, 0.5f, 0}, {-1, 0.5f, 0}},
+                                       {0, 1, 2, 0, 2, 3});
+  quad["attributes"]["TEXCOORD_0"] = gltf.addAccessor(
+      test::packed(std::vector<float>{0, 1, 1, 1, 1, 0, 0, 0}), test::kFloat, 4, "VEC2");
+  quad["attributes"]["TEXCOORD_1"] = gltf.addAccessor(
+      test::packed(std::vector<float>{1, 1, 0, 1, 0, 0, 1, 0}), test::kFloat, 4, "VEC2");
+  quad["material"] = 0;
+  gltf.addMesh("quad", {quad});
+  gltf.document["materials"] = {material};
+  gltf.document["textures"] = nlohmann::json::array();
+  gltf.document["images"] = nlohmann::json::array();
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    gltf.document["textures"].push_back({{"source", i}});
+    gltf.document["images"].push_back(
+        {{"uri", "data:image/png;base64," + test::base64(images[i])}});
+  }
+  gltf.document["extensionsUsed"] = {"KHR_texture_transform"};
+  gltf.write(path);
+}
+
+// An 8x1 RGBA PNG, its left four texels `left` and its right four `right`: sampled at the
+// quad's left and right thirds, texels of one colour only meet under the filter.
+std::string splitPng(const std::array<uint8_t, 4>& left, const std::array<uint8_t, 4>& right) {
+  std::vector<uint8_t> pixels;
+  for (int x = 0; x < 8; ++x)
+    pixels.insert(pixels.end(), x < 4 ? left.begin() : right.begin(),
+                  x < 4 ? left.end() : right.end());
+  return test::pngBytes(8, 1, 4, pixels.data());
 }
 
 // One quad across the view, white, with vertex colours (normalized bytes) of orange.
@@ -95,11 +138,14 @@ class ModelMaterialsTest : public test::VulkanTest {
   }
 
   // The pair seen straight on under a sun behind the camera, a green wall 1 m behind it;
-  // `material` names one for all.
-  render::Rgba8Image render(const std::string& material) {
+  // `material` names one for all; `ambient` is the environment's ambient light.
+  render::Rgba8Image render(const std::string& material, float ambient = 0.0f) {
     std::ofstream(root_ / "level.json") << R"({
       "format": 1, "name": "Pair",
       "camera": { "position": [0, 0, 2.5] },
+      "environment": { "ambient": [)" + std::to_string(ambient) +
+                                               "," + std::to_string(ambient) + "," +
+                                               std::to_string(ambient) + R"(] },
       "materials": { "paint": { "color": [0.5, 0.5, 0.5] }, "green": { "color": [0, 1, 0] } },
       "meshes": { "pair": { "gltf": "pair.gltf" }, "wall": { "box": { "size": [6, 6, 0.1] } } },
       "entities": { "pair": { "mesh": "pair")" +
@@ -109,6 +155,26 @@ class ModelMaterialsTest : public test::VulkanTest {
     })";
     const game::Level level = game::loadLevel(root_ / "level.json");
     return renderLevel(level, 32, 16, scene::Tonemap::Identity);
+  }
+
+  // The quad's left and right pixels (x 12 and 19 of row 8), RGB.
+  static std::array<std::array<int, 3>, 2> sides(const render::Rgba8Image& image) {
+    std::array<std::array<int, 3>, 2> result{};
+    const std::array<uint32_t, 2> columns = {12, 19};
+    for (std::size_t side = 0; side < 2; ++side)
+      for (std::size_t c = 0; c < 3; ++c)
+        result[side][c] = image.pixels[(8 * std::size_t(image.width) + columns[side]) * 4 + c];
+    return result;
+  }
+
+  // Each side's colour within `tolerance` of the reference's on the same side.
+  static void expectSidesNear(const render::Rgba8Image& image, const render::Rgba8Image& reference,
+                              int tolerance) {
+    const auto got = sides(image), expected = sides(reference);
+    for (std::size_t side = 0; side < 2; ++side)
+      for (std::size_t c = 0; c < 3; ++c)
+        EXPECT_NEAR(got[side][c], expected[side][c], tolerance)
+            << (side ? "right" : "left") << " side, channel " << c;
   }
 
   fs::path root_;
@@ -165,6 +231,114 @@ TEST_F(ModelMaterialsTest, an_alpha_masked_quad_has_holes_for_camera_and_shadow_
   EXPECT_LT(image.pixels[opaque + 1], 40);
   EXPECT_LT(image.pixels[hole], 40);  // the lit green wall behind the hole
   EXPECT_GT(image.pixels[hole + 1], 120);
+}
+
+}  // namespace
+
+namespace {
+
+// glTF's metallicRoughnessTexture (green scales roughness, blue metallic) and emissiveTexture
+// (sRGB, scales the emissive factor) render each side as a model whose factors are the
+// products does: left a rough metal that glows, right a half-rough dielectric that does not.
+TEST_F(ModelMaterialsTest, metallic_roughness_and_emissive_textures_scale_their_factors) {
+  const nlohmann::json textured = {{"name", "worn"},
+                                   {"emissiveFactor", {0.0, 0.0, 0.5}},
+                                   {"emissiveTexture", {{"index", 1}}},
+                                   {"pbrMetallicRoughness",
+                                    {{"baseColorFactor", {0.9, 0.5, 0.2, 1}},
+                                     {"metallicFactor", 1},
+                                     {"roughnessFactor", 1},
+                                     {"metallicRoughnessTexture", {{"index", 0}}}}}};
+  writeTexturedQuadModel(root_ / "pair.gltf", textured,
+                         {splitPng({0, 255, 255, 255}, {0, 128, 0, 255}),
+                          splitPng({255, 255, 255, 255}, {0, 0, 0, 255})});
+  const render::Rgba8Image image = render("");
+
+  writePairModel(
+      root_ / "pair.gltf",
+      {{"name", "metal"},
+       {"emissiveFactor", {0.0, 0.0, 0.5}},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.9, 0.5, 0.2, 1}}, {"metallicFactor", 1}, {"roughnessFactor", 1}}}},
+      {{"name", "dielectric"},
+       {"pbrMetallicRoughness",
+        {{"baseColorFactor", {0.9, 0.5, 0.2, 1}},
+         {"metallicFactor", 0},
+         {"roughnessFactor", 128.0 / 255.0}}}});
+  const render::Rgba8Image reference = render("");
+  expectSidesNear(image, reference, 1);
+  // The two sides differ, so the texture did something.
+  EXPECT_GT(sides(image)[0][2], sides(image)[1][2] + 40);
+}
+
+// glTF's occlusionTexture darkens the ambient light only: where it is 0 (strength 1) the quad
+// looks as it does without ambient light; where it is 1 as it does without the texture.
+TEST_F(ModelMaterialsTest, occlusion_texture_takes_away_ambient_light_only) {
+  const nlohmann::json base = plainMaterial("stone", {0.8, 0.8, 0.8, 1});
+  nlohmann::json occluded = base;
+  occluded["occlusionTexture"] = {{"index", 0}, {"strength", 1.0}};
+  writeTexturedQuadModel(root_ / "pair.gltf", occluded,
+                         {splitPng({255, 255, 255, 255}, {0, 0, 0, 255})});
+  const render::Rgba8Image image = render("", 0.5f);
+  writeTexturedQuadModel(root_ / "pair.gltf", base, {});
+  const render::Rgba8Image withAmbient = render("", 0.5f);
+  const render::Rgba8Image withoutAmbient = render("", 0.0f);
+  EXPECT_NEAR(sides(image)[0][0], sides(withAmbient)[0][0], 1);
+  EXPECT_NEAR(sides(image)[1][0], sides(withoutAmbient)[1][0], 1);
+  EXPECT_GT(sides(withAmbient)[1][0], sides(withoutAmbient)[1][0] + 20);
+}
+
+// A base colour texture red on its left half and blue on its right, moved by
+// KHR_texture_transform (an offset of half, a half turn, a mirroring scale) or read through
+// the second UV set (which runs the other way): each swaps the sides.
+TEST_F(ModelMaterialsTest, texture_transform_and_second_uv_set_move_the_texture) {
+  writePairModel(root_ / "pair.gltf", plainMaterial("blue", {0, 0, 1, 1}),
+                 plainMaterial("red", {1, 0, 0, 1}));
+  const render::Rgba8Image swapped = render("");
+  const std::string redBlue = splitPng({255, 0, 0, 255}, {0, 0, 255, 255});
+  auto painted = [&](const nlohmann::json& textureInfo) {
+    nlohmann::json material = plainMaterial("painted", {1, 1, 1, 1});
+    material["pbrMetallicRoughness"]["baseColorTexture"] = textureInfo;
+    writeTexturedQuadModel(root_ / "pair.gltf", material, {redBlue});
+    return render("");
+  };
+  const render::Rgba8Image plain = painted({{"index", 0}});
+  EXPECT_GT(sides(plain)[0][0], 120);  // red on the left as drawn
+  EXPECT_GT(sides(plain)[1][2], 120);
+  const nlohmann::json transforms[] = {
+      {{"offset", {0.5, 0.0}}},
+      {{"rotation", 3.14159265358979}},
+      {{"scale", {-1.0, 1.0}}},
+      {{"texCoord", 1}},
+  };
+  for (const nlohmann::json& transform : transforms) {
+    SCOPED_TRACE(transform.dump());
+    expectSidesNear(painted({{"index", 0}, {"extensions", {{"KHR_texture_transform", transform}}}}),
+                    swapped, 1);
+  }
+  SCOPED_TRACE("texCoord 1");
+  expectSidesNear(painted({{"index", 0}, {"texCoord", 1}}), swapped, 1);
+}
+
+// alphaMode BLEND draws the quad as glass tinted mix(white, colour, alpha): red at half alpha
+// passes (1, 0.5, 0.5). Behind it the green wall is seen through the tint and lit by the sun
+// through it (a tinted shadow): a quarter of the green the open wall shows.
+TEST_F(ModelMaterialsTest, a_blended_quad_tints_what_is_seen_through_it_and_its_shadow) {
+  nlohmann::json tinted = plainMaterial("tinted", {1, 0, 0, 0.5});
+  tinted["alphaMode"] = "BLEND";
+  writeTexturedQuadModel(root_ / "pair.gltf", tinted, {});
+  const render::Rgba8Image image = render("");
+  const game::Level level = game::loadLevel(root_ / "level.json");
+  EXPECT_EQ(level.materials[level.entities[0].material].kind, scene::MaterialKind::Glass);
+  const auto pixel = [&](uint32_t x, uint32_t y, std::size_t c) {
+    return image.pixels[(std::size_t(y) * image.width + x) * 4 + c];
+  };
+  // Row 0 sees the open wall above the quad and its shadow; the centre, the wall through both.
+  const float open = scene::srgbToLinear(pixel(16, 0, 1) / 255.0f);
+  const float expected = scene::linearToSrgb(0.25f * open) * 255.0f;
+  EXPECT_GT(pixel(16, 0, 1), 100);
+  EXPECT_NEAR(float(pixel(16, 8, 1)), expected, 2.0f);
+  EXPECT_LE(pixel(16, 8, 0), 1);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <tuple>
+#include <utility>
 
 // The "entities" section, with the movers and interactables an entity may be.
 namespace game::level_format {
@@ -43,16 +44,26 @@ std::vector<uint32_t> modelMaterials(LevelReader& reader, uint32_t mesh,
     desc.alphaCutoff = source.alphaCutoff;
     desc.roughness = source.roughness;
     desc.emissive = source.emissive;
-    const std::string meshPointer = childPointer("/meshes", meshId);
-    if (source.colorTexture) {
-      desc.colorTexture =
-          reader.addModelTexture(std::move(*source.colorTexture), meshPointer, level);
-      source.colorTexture.reset();
+    desc.normalScale = source.normalScale;
+    desc.occlusionStrength = source.occlusionStrength;
+    desc.textureMappings = source.textureMappings;
+    if (source.alphaBlend) {
+      // Drawn as glass whose tint is the colour mixed in by its alpha (per point in the shader;
+      // these are the factors' own, for what reads the tint on the host).
+      desc.kind = scene::MaterialKind::Glass;
+      desc.alphaBlend = true;
+      desc.glassTint = glm::mix(glm::vec3(1.0f), source.baseColor, source.alpha);
     }
-    if (source.normalTexture) {
-      desc.normalTexture =
-          reader.addModelTexture(std::move(*source.normalTexture), meshPointer, level);
-      source.normalTexture.reset();
+    const std::string meshPointer = childPointer("/meshes", meshId);
+    for (auto [texture, slot] :
+         {std::pair{&source.colorTexture, &desc.colorTexture},
+          std::pair{&source.normalTexture, &desc.normalTexture},
+          std::pair{&source.metallicRoughnessTexture, &desc.metallicRoughnessTexture},
+          std::pair{&source.occlusionTexture, &desc.occlusionTexture},
+          std::pair{&source.emissiveTexture, &desc.emissiveTexture}}) {
+      if (!*texture) continue;
+      *slot = reader.addModelTexture(std::move(**texture), meshPointer, level);
+      texture->reset();
     }
     level.materialIds.push_back(materialId);
     level.materials.push_back(desc);
