@@ -40,10 +40,10 @@ void main() {
   uint v0 = corners.x, v1 = corners.y, v2 = corners.z;
   vec3 weights = vec3(1.0 - barycentrics.x - barycentrics.y, barycentrics.x, barycentrics.y);
   uint materialIndex = triangleMaterial(geometry, uint(gl_PrimitiveID));
-  GpuMaterial material = materials[materialIndex];
+  uint material = materialIndex;
 
   vec3 p0 = fetchVec3(v0, 0u), p1 = fetchVec3(v1, 0u), p2 = fetchVec3(v2, 0u);
-  TrianglePoint point = interpolatePoint(corners, weights);
+  TrianglePoint point = interpolatePoint(material, corners, weights);
   vec3 objectGeometric = cross(p1 - p0, p2 - p0);
   vec3 objectShading = fetchVec3(v0, 3u) * weights.x + fetchVec3(v1, 3u) * weights.y +
                        fetchVec3(v2, 3u) * weights.z;
@@ -55,14 +55,14 @@ void main() {
     vec2 uv2 = roleUv(material, TEXTURE_NORMAL, fetchUv(v2), fetchUv1(v2));
     objectShading = applyNormalMap(objectShading, p0, p1, p2, uv0, uv1, uv2,
                                    roleUv(material, TEXTURE_NORMAL, point.uv0, point.uv1),
-                                   normalMap - 1u, material.textureFactors.y);
+                                   normalMap - 1u, materials[material].textureFactors.y);
   }
   // Vertex colours (white unless a glTF model gave COLOR_0) multiply the base colour.
-  vec3 albedo = material.baseColorSpecular.rgb * point.color.rgb *
+  vec3 albedo = materials[material].baseColorSpecular.rgb * point.color.rgb *
                 sampleRole(material, TEXTURE_BASE_COLOR, point.uv0, point.uv1).rgb;
-  vec3 emissive = material.emissiveRoughness.rgb;
-  float roughness = material.emissiveRoughness.a;
-  float metallic = material.mirrorTint.a;
+  vec3 emissive = materials[material].emissiveRoughness.rgb;
+  float roughness = materials[material].emissiveRoughness.a;
+  float metallic = materials[material].mirrorTint.a;
   float occlusion = 1.0;
   if (textureSlot(material, TEXTURE_EMISSIVE) > 0u)
     emissive *= sampleRole(material, TEXTURE_EMISSIVE, point.uv0, point.uv1).rgb;
@@ -73,7 +73,7 @@ void main() {
   }
   if (textureSlot(material, TEXTURE_OCCLUSION) > 0u) {
     float texel = sampleRole(material, TEXTURE_OCCLUSION, point.uv0, point.uv1).r;
-    occlusion = 1.0 + material.textureFactors.z * (texel - 1.0);
+    occlusion = 1.0 + materials[material].textureFactors.z * (texel - 1.0);
   }
 
   // Normals transform by the inverse transpose: row-vector times world-to-object.

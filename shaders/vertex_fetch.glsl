@@ -37,20 +37,20 @@ uvec3 triangleVertices(uvec4 geometry, uint primitive) {
          geometry.y;
 }
 
-// A texture role's texture + 1 (0: the material has none).
-uint textureSlot(GpuMaterial material, uint role) {
-  return material.textureSlots[role >> 2u][role & 3u];
+// Material `material`'s texture + 1 of role `role` (0: it has none).
+uint textureSlot(uint material, uint role) {
+  return materials[material].textureSlots[role >> 2u][role & 3u];
 }
 
 // Where role `role` samples, given the point's two UV sets: its set, moved by its transform.
-vec2 roleUv(GpuMaterial material, uint role, vec2 uv0, vec2 uv1) {
-  vec3 uv = vec3(((material.kindShading.z >> role) & 1u) != 0u ? uv1 : uv0, 1.0);
-  return vec2(dot(material.textureTransforms[2u * role].xyz, uv),
-              dot(material.textureTransforms[2u * role + 1u].xyz, uv));
+vec2 roleUv(uint material, uint role, vec2 uv0, vec2 uv1) {
+  vec3 uv = vec3(((materials[material].kindShading.z >> role) & 1u) != 0u ? uv1 : uv0, 1.0);
+  return vec2(dot(materials[material].textureTransforms[2u * role].xyz, uv),
+              dot(materials[material].textureTransforms[2u * role + 1u].xyz, uv));
 }
 
 // Role `role`'s texel at the point (white when the material has no such texture).
-vec4 sampleRole(GpuMaterial material, uint role, vec2 uv0, vec2 uv1) {
+vec4 sampleRole(uint material, uint role, vec2 uv0, vec2 uv1) {
   uint slot = textureSlot(material, role);
   if (slot == 0u) return vec4(1.0);
   return textureLod(textures[nonuniformEXT(slot - 1u)], roleUv(material, role, uv0, uv1), 0.0);
@@ -64,12 +64,16 @@ struct TrianglePoint {
   vec4 color;
 };
 
-TrianglePoint interpolatePoint(uvec3 corners, vec3 weights) {
+// The second set is read only when one of the material's textures uses it.
+TrianglePoint interpolatePoint(uint material, uvec3 corners, vec3 weights) {
   TrianglePoint point;
   point.uv0 = fetchUv(corners.x) * weights.x + fetchUv(corners.y) * weights.y +
               fetchUv(corners.z) * weights.z;
-  point.uv1 = fetchUv1(corners.x) * weights.x + fetchUv1(corners.y) * weights.y +
-              fetchUv1(corners.z) * weights.z;
+  point.uv1 = point.uv0;
+  if (materials[material].kindShading.z != 0u) {
+    point.uv1 = fetchUv1(corners.x) * weights.x + fetchUv1(corners.y) * weights.y +
+                fetchUv1(corners.z) * weights.z;
+  }
   point.color = fetchColor(corners.x) * weights.x + fetchColor(corners.y) * weights.y +
                 fetchColor(corners.z) * weights.z;
   return point;
