@@ -81,6 +81,15 @@ std::string splitPng(const std::array<uint8_t, 4>& left, const std::array<uint8_
   return test::pngBytes(8, 1, 4, pixels.data());
 }
 
+// A 1x8 RGBA PNG, its top four texels `top` and its bottom four `bottom`.
+std::string stackedPng(const std::array<uint8_t, 4>& top, const std::array<uint8_t, 4>& bottom) {
+  std::vector<uint8_t> pixels;
+  for (int y = 0; y < 8; ++y)
+    pixels.insert(pixels.end(), y < 4 ? top.begin() : bottom.begin(),
+                  y < 4 ? top.end() : bottom.end());
+  return test::pngBytes(1, 8, 4, pixels.data());
+}
+
 // One quad across the view, white, with vertex colours (normalized bytes) of orange.
 void writeOrangeVertexColourModel(const fs::path& path) {
   test::GltfBuilder gltf;
@@ -320,6 +329,29 @@ TEST_F(ModelMaterialsTest, texture_transform_and_second_uv_set_move_the_texture)
   expectSidesNear(painted({{"index", 0}, {"texCoord", 1}}), swapped, 1);
 }
 
+// KHR_texture_transform turns UVs counter-clockwise: uv' = (cos u + sin v, -sin u + cos v).
+// A texture red on top and blue below, turned a quarter, samples v' = -u: the quad's left
+// (u near 0.2, v' 0.8 after wrapping) blue, its right red; turned the other way, the opposite.
+TEST_F(ModelMaterialsTest, texture_rotation_turns_the_way_the_extension_says) {
+  writePairModel(root_ / "pair.gltf", plainMaterial("blue", {0, 0, 1, 1}),
+                 plainMaterial("red", {1, 0, 0, 1}));
+  const render::Rgba8Image blueRed = render("");
+  writePairModel(root_ / "pair.gltf", plainMaterial("red", {1, 0, 0, 1}),
+                 plainMaterial("blue", {0, 0, 1, 1}));
+  const render::Rgba8Image redBlue = render("");
+  const std::string redOverBlue = stackedPng({255, 0, 0, 255}, {0, 0, 255, 255});
+  auto turned = [&](double radians) {
+    nlohmann::json material = plainMaterial("painted", {1, 1, 1, 1});
+    material["pbrMetallicRoughness"]["baseColorTexture"] = {
+        {"index", 0}, {"extensions", {{"KHR_texture_transform", {{"rotation", radians}}}}}};
+    writeTexturedQuadModel(root_ / "pair.gltf", material, {redOverBlue});
+    return render("");
+  };
+  const double quarter = 1.5707963267948966;
+  expectSidesNear(turned(quarter), blueRed, 1);
+  expectSidesNear(turned(-quarter), redBlue, 1);
+}
+
 // alphaMode BLEND draws the quad as glass tinted mix(white, colour, alpha): red at half alpha
 // passes (1, 0.5, 0.5). Behind it the green wall is seen through the tint and lit by the sun
 // through it (a tinted shadow): a quarter of the green the open wall shows.
@@ -339,6 +371,31 @@ TEST_F(ModelMaterialsTest, a_blended_quad_tints_what_is_seen_through_it_and_its_
   EXPECT_GT(pixel(16, 0, 1), 100);
   EXPECT_NEAR(float(pixel(16, 8, 1)), expected, 2.0f);
   EXPECT_LE(pixel(16, 8, 0), 1);
+}
+
+}  // namespace
+
+namespace {
+
+// docs/gltf/showcase.json (the before/after pictures of docs/gltf) loads without a warning,
+// each model with the materials docs/gltf/make_showcase.py gave it.
+TEST(GltfShowcaseTest, showcase_models_load_with_their_materials_and_no_warning) {
+  const game::Level level = game::loadLevel(test::sourceDir() / "docs" / "gltf" / "showcase.json");
+  EXPECT_TRUE(level.warnings.empty()) << level.warnings.front();
+  auto entity = [&](const std::string& id) {
+    for (const game::Entity& candidate : level.entities)
+      if (candidate.id == id) return candidate;
+    ADD_FAILURE() << "no entity " << id;
+    return game::Entity{};
+  };
+  EXPECT_EQ(entity("cube").meshMaterials.size(), 6u);
+  const scene::MaterialDesc& gold = level.materials[entity("sphere").material];
+  EXPECT_TRUE(gold.metallicRoughness);
+  EXPECT_EQ(gold.metallic, 1.0f);
+  EXPECT_EQ(level.materials[entity("screen").material].alphaCutoff, 0.5f);
+  const scene::MaterialDesc& pane = level.materials[entity("pane").material];
+  EXPECT_EQ(pane.kind, scene::MaterialKind::Glass);
+  EXPECT_TRUE(pane.alphaBlend);
 }
 
 }  // namespace
