@@ -1,6 +1,8 @@
 #include "game/gltf_mesh.hpp"
 
 #include <algorithm>
+#include <cstring>
+#include <fstream>
 #include <vector>
 
 #include <tiny_gltf.h>
@@ -10,6 +12,7 @@
 #include "game/gltf_material.hpp"
 #include "game/gltf_mesh_assembler.hpp"
 #include "game/gltf_unsupported.hpp"
+#include "game/json_document.hpp"
 #include "game/json_reader.hpp"
 
 namespace game {
@@ -17,6 +20,29 @@ namespace game {
 namespace {
 
 namespace fs = std::filesystem;
+
+// Refuses a model whose JSON (a .glb's JSON chunk) nests deeper than kMaxJsonNesting, before
+// tinygltf builds a tree of it.
+void checkJsonNesting(const fs::path& file, bool binary) {
+  constexpr std::size_t kMaxJsonBytes = 256u << 20;  // the most tinygltf is given to read
+  std::ifstream stream(file, std::ios::binary);
+  std::size_t jsonBytes = kMaxJsonBytes;
+  if (binary) {
+    // "glTF", version, length, then the JSON chunk: its length, "JSON", its bytes.
+    char header[20] = {};
+    uint32_t chunkBytes = 0;
+    if (!stream.read(header, sizeof header)) return;  // tinygltf says what is wrong
+    std::memcpy(&chunkBytes, header + 12, sizeof chunkBytes);
+    jsonBytes = std::min<std::size_t>(chunkBytes, kMaxJsonBytes);
+  }
+  std::string text = readAtMostPastLimit(stream, jsonBytes);
+  text.resize(std::min(text.size(), jsonBytes));
+  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text)) {
+    const SourcePosition at = positionOfOffset(text, *tooDeep);
+    gltf::fail(file, "invalid glTF JSON at line " + std::to_string(at.line) + ", column " +
+                         std::to_string(at.column) + ": " + nestingLimitMessage());
+  }
+}
 
 // A BLEND surface is drawn as glass, which is a whole entity's kind: in a model that has opaque
 // materials too, the BLEND ones are drawn opaque, with a warning saying how to keep them.
@@ -103,6 +129,8 @@ GltfModel loadGltfModel(const fs::path& file, const fs::path& allowedRoot,
 
   // tinygltf indexes an empty .glb before checking its size (a raw std::out_of_range).
   if (fs::file_size(file, error) == 0 && !error) fail(file, "cannot load glTF: the file is empty");
+
+  checkJsonNesting(file, extension == ".glb");
 
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&gltf::keepEncodedImage, nullptr);

@@ -1,5 +1,9 @@
 #include "game/json_document.hpp"
 
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 namespace game {
@@ -47,7 +51,92 @@ struct FirstErrorSax : nlohmann::json_sax<nlohmann::json> {
   }
 };
 
+// Builds an ordered_json from SAX events, appending object members without nlohmann's linear
+// search for an existing key: each open object keeps a hash index of its keys instead.
+class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
+ public:
+  using Json = nlohmann::ordered_json;
+  using Base = nlohmann::json_sax<Json>;
+
+  Json root;
+
+  bool null() override { return add(Json(nullptr)); }
+  bool boolean(bool value) override { return add(Json(value)); }
+  bool number_integer(Base::number_integer_t value) override { return add(Json(value)); }
+  bool number_unsigned(Base::number_unsigned_t value) override { return add(Json(value)); }
+  bool number_float(Base::number_float_t value, const Base::string_t&) override {
+    return add(Json(value));
+  }
+  bool string(Base::string_t& value) override { return add(Json(std::move(value))); }
+  bool binary(Base::binary_t& value) override { return add(Json::binary(std::move(value))); }
+  bool start_object(std::size_t) override { return open(Json::object()); }
+  bool key(Base::string_t& key) override {
+    open_.back().key = std::move(key);
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(Json::array()); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    return false;
+  }
+
+ private:
+  using Members = std::vector<std::pair<const std::string, Json>>;  // ordered_map's base
+
+  struct Open {
+    Json* value;
+    std::string key;                                     // the member being read (objects)
+    std::unordered_map<std::string, std::size_t> index;  // key -> member (objects)
+  };
+
+  // Places `value` in the open array or object (or as the root); returns where it now lives.
+  Json* place(Json value) {
+    if (open_.empty()) {
+      root = std::move(value);
+      return &root;
+    }
+    Open& parent = open_.back();
+    if (parent.value->is_array()) {
+      parent.value->get_ref<Json::array_t&>().push_back(std::move(value));
+      return &parent.value->get_ref<Json::array_t&>().back();
+    }
+    Members& members = parent.value->get_ref<Json::object_t&>();
+    const auto [found, added] = parent.index.try_emplace(parent.key, members.size());
+    if (!added) {
+      members[found->second].second = std::move(value);
+      return &members[found->second].second;
+    }
+    members.emplace_back(parent.key, std::move(value));
+    return &members.back().second;
+  }
+
+  bool add(Json value) {
+    place(std::move(value));
+    return true;
+  }
+
+  // A child's address stays valid while it is open: its parent grows only after it closes.
+  bool open(Json container) {
+    open_.push_back({place(std::move(container)), {}, {}});
+    return true;
+  }
+
+  bool close() {
+    open_.pop_back();
+    return true;
+  }
+
+  std::vector<Open> open_;
+};
+
 }  // namespace
+
+std::optional<nlohmann::ordered_json> parseOrderedJson(std::string_view text) {
+  OrderedJsonBuilder builder;
+  if (!nlohmann::ordered_json::sax_parse(text, &builder)) return std::nullopt;
+  return std::move(builder.root);
+}
 
 JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
   FirstErrorSax sax;
@@ -68,6 +157,33 @@ JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
     }
   }
   return error;
+}
+
+std::optional<std::size_t> offsetPastNesting(std::string_view text, std::size_t maxNesting) {
+  std::size_t depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') {
+        ++i;  // the escaped character cannot end the string
+      } else if (c == '"') {
+        inString = false;
+      }
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > maxNesting) return i;
+    } else if ((c == ']' || c == '}') && depth > 0) {
+      --depth;
+    }
+  }
+  return std::nullopt;
+}
+
+std::string nestingLimitMessage() {
+  return "arrays and objects nest more than " + std::to_string(kMaxJsonNesting) +
+         " deep here, the limit";
 }
 
 std::string fileLineColumn(const std::filesystem::path& file, SourcePosition at) {

@@ -5,8 +5,11 @@
 #include <cstddef>
 #include <filesystem>
 #include <istream>
+#include <optional>
 #include <string>
 #include <string_view>
+
+#include <nlohmann/json.hpp>
 
 #include "game/json_positions.hpp"
 
@@ -24,6 +27,26 @@ struct JsonSyntaxError {
   std::string reason;
   bool numberTooLarge = false;  // the text is valid JSON up to a number no double can hold
 };
+
+// Arrays and objects may nest at most this deep in every JSON file Sightline reads (levels,
+// replays, settings, progress, glTF): no format needs more (a level with conditions nested to
+// their limit about 25), and a reader checks it before building a tree, so deep nesting cannot
+// cost more than linear time.
+inline constexpr std::size_t kMaxJsonNesting = 64;
+
+// The offset of the first '[' or '{' in `text` that opens an array or object nested deeper than
+// `maxNesting`, if one does. One pass, skipping strings; `text` need not be valid JSON.
+std::optional<std::size_t> offsetPastNesting(std::string_view text,
+                                             std::size_t maxNesting = kMaxJsonNesting);
+
+// "arrays and objects nest more than 64 deep here, the limit" (the message for the above).
+std::string nestingLimitMessage();
+
+// `text` parsed into an ordered_json (members in file order), in time linear in its size
+// (nlohmann's own parse looks each key up in the object's members so far, quadratic in their
+// number); a repeated key keeps its first place and its last value, as nlohmann does. Nothing
+// when `text` is not valid JSON (firstJsonSyntaxError says why).
+std::optional<nlohmann::ordered_json> parseOrderedJson(std::string_view text);
 
 // Runs a SAX pass over `text`, which must fail to parse, and says where and why it fails.
 JsonSyntaxError firstJsonSyntaxError(std::string_view text);

@@ -152,17 +152,8 @@ class Scanner {
 struct OpenContainer {
   bool isArray = false;
   std::size_t nextIndex = 0;
-  std::string pointer;
+  uint32_t node = 0;
 };
-
-SourcePosition lookup(const std::unordered_map<std::string, SourcePosition>& positions,
-                      std::string pointer) {
-  while (true) {
-    if (auto found = positions.find(pointer); found != positions.end()) return found->second;
-    if (pointer.empty()) return {};
-    pointer.erase(pointer.rfind('/'));
-  }
-}
 
 }  // namespace
 
@@ -216,20 +207,58 @@ std::string escapeJsonPointerToken(std::string_view token) {
   return escaped;
 }
 
+std::size_t JsonPositions::ChildHash::operator()(const ChildKey& key) const {
+  return std::hash<std::string_view>()(key.second) * 31 + key.first;
+}
+
+uint32_t JsonPositions::child(uint32_t parent, std::string token, SourcePosition keyPosition,
+                              bool isKey) {
+  nodes_.push_back({parent, std::move(token), {}, keyPosition, isKey});
+  const uint32_t id = static_cast<uint32_t>(nodes_.size() - 1);
+  const auto [existing, added] = children_.try_emplace({parent, nodes_.back().token}, id);
+  if (added) return id;
+  nodes_.pop_back();  // a repeated key: its positions stay those of the first
+  if (isKey && !firstDuplicateKey_)
+    firstDuplicateKey_ = DuplicateKey{pointerOf(existing->second), keyPosition};
+  return existing->second;
+}
+
+std::string JsonPositions::pointerOf(uint32_t node) const {
+  std::vector<const std::string*> tokens;
+  for (uint32_t at = node; at != 0; at = nodes_[at].parent) tokens.push_back(&nodes_[at].token);
+  std::string pointer;
+  for (auto token = tokens.rbegin(); token != tokens.rend(); ++token) pointer += "/" + **token;
+  return pointer;
+}
+
+// The deepest recorded node on the way to `pointer`, and whether it is the pointer's own.
+std::pair<uint32_t, bool> JsonPositions::find(const std::string& pointer) const {
+  uint32_t node = 0;
+  std::size_t start = 0;
+  while (start < pointer.size()) {
+    const std::size_t end = std::min(pointer.find('/', start + 1), pointer.size());
+    const std::string_view token(pointer.data() + start + 1, end - start - 1);
+    const auto found = children_.find({node, token});
+    if (found == children_.end()) return {node, false};
+    node = found->second;
+    start = end;
+  }
+  return {node, true};
+}
+
 JsonPositions JsonPositions::scan(std::string_view text) {
   JsonPositions result;
+  if (text.empty()) return result;
+  result.nodes_.push_back({0, {}, {}, {}, false});  // the root
   Scanner scanner(text);
   std::vector<OpenContainer> open;
-  std::string pointer;  // of the value about to be read
+  uint32_t node = 0;  // of the value about to be read
 
   // Reads an object member's key and leaves the scanner at the start of its value.
   auto readMemberKey = [&]() {
     const SourcePosition keyPosition = scanner.position();
-    const std::string key = scanner.readString();
-    pointer = open.back().pointer + "/" + escapeJsonPointerToken(key);
-    if (!result.keys_.emplace(pointer, keyPosition).second && !result.firstDuplicateKey_) {
-      result.firstDuplicateKey_ = DuplicateKey{pointer, keyPosition};
-    }
+    node = result.child(open.back().node, escapeJsonPointerToken(scanner.readString()), keyPosition,
+                        true);
     scanner.skipWhitespace();
     scanner.advance();  // ':'
     scanner.skipWhitespace();
@@ -239,19 +268,23 @@ JsonPositions JsonPositions::scan(std::string_view text) {
   bool expectingValue = true;
   while (!scanner.atEnd()) {
     if (expectingValue) {
-      result.values_.emplace(pointer, scanner.position());
+      Node& current = result.nodes_[node];
+      if (!current.valueRecorded) {
+        current.value = scanner.position();
+        current.valueRecorded = true;
+      }
       const char c = scanner.peek();
       if (c == '{' || c == '[') {
         scanner.advance();
         scanner.skipWhitespace();
-        open.push_back({c == '[', 0, pointer});
+        open.push_back({c == '[', 0, node});
         const char closing = c == '[' ? ']' : '}';
         if (scanner.peek() == closing) {
           scanner.advance();
           open.pop_back();
           expectingValue = false;
         } else if (c == '[') {
-          pointer = open.back().pointer + "/0";
+          node = result.child(open.back().node, "0", {}, false);
           open.back().nextIndex = 1;
         } else {
           readMemberKey();
@@ -276,7 +309,7 @@ JsonPositions JsonPositions::scan(std::string_view text) {
       scanner.skipWhitespace();
       OpenContainer& container = open.back();
       if (container.isArray) {
-        pointer = container.pointer + "/" + std::to_string(container.nextIndex++);
+        node = result.child(container.node, std::to_string(container.nextIndex++), {}, false);
       } else {
         readMemberKey();
       }
@@ -289,19 +322,25 @@ JsonPositions JsonPositions::scan(std::string_view text) {
 }
 
 SourcePosition JsonPositions::valueAt(const std::string& pointer) const {
-  return lookup(values_, pointer);
+  if (nodes_.empty()) return {};
+  return nodes_[find(pointer).first].value;
 }
 
 std::optional<std::string> JsonPositions::pointerOfValueAt(SourcePosition position) const {
-  for (const auto& [pointer, start] : values_) {
-    if (start.line == position.line && start.column == position.column) return pointer;
+  for (uint32_t node = 0; node < nodes_.size(); ++node) {
+    const SourcePosition start = nodes_[node].value;
+    if (nodes_[node].valueRecorded && start.line == position.line &&
+        start.column == position.column)
+      return pointerOf(node);
   }
   return std::nullopt;
 }
 
 SourcePosition JsonPositions::keyAt(const std::string& pointer) const {
-  if (auto found = keys_.find(pointer); found != keys_.end()) return found->second;
-  return valueAt(pointer);
+  if (nodes_.empty()) return {};
+  const auto [node, exact] = find(pointer);
+  if (exact && nodes_[node].isKey) return nodes_[node].key;
+  return nodes_[node].value;
 }
 
 SourcePosition positionOfOffset(std::string_view text, std::size_t offset) {

@@ -3,10 +3,13 @@
 // walks JSON text that has already parsed successfully and remembers where every value (and
 // every object key) starts, indexed by JSON pointer.
 #include <cstddef>
+#include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
 
 namespace game {
 
@@ -40,8 +43,28 @@ class JsonPositions {
   std::optional<std::string> pointerOfValueAt(SourcePosition position) const;
 
  private:
-  std::unordered_map<std::string, SourcePosition> values_;
-  std::unordered_map<std::string, SourcePosition> keys_;
+  // Every value read, as a tree: each node knows its parent and its pointer token, and is
+  // found from them, so memory stays linear in the text however deep or long the keys.
+  struct Node {
+    uint32_t parent;
+    std::string token;     // escaped pointer token: the key, or the array index
+    SourcePosition value;  // where the value starts
+    SourcePosition key;    // where its key starts (object members)
+    bool isKey;            // an object member
+    bool valueRecorded = false;
+  };
+  using ChildKey = std::pair<uint32_t, std::string_view>;  // parent, token (in the node)
+  struct ChildHash {
+    std::size_t operator()(const ChildKey& key) const;
+  };
+
+  // Records a child of `parent` (or finds the one a repeated key already made).
+  uint32_t child(uint32_t parent, std::string token, SourcePosition keyPosition, bool isKey);
+  std::string pointerOf(uint32_t node) const;
+  std::pair<uint32_t, bool> find(const std::string& pointer) const;
+
+  std::deque<Node> nodes_;  // node 0 is the root; a deque keeps tokens where the keys point
+  std::unordered_map<ChildKey, uint32_t, ChildHash> children_;
   std::optional<DuplicateKey> firstDuplicateKey_;
 };
 

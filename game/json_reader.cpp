@@ -139,14 +139,14 @@ std::string NumberRule::describe() const {
 }
 
 OrderedJson JsonReader::parse() {
-  OrderedJson root;
-  try {
-    root = OrderedJson::parse(text_);
-  } catch (const OrderedJson::exception&) {
-    failInvalidJson();
+  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text_)) {
+    throw JsonInputError(placeInFile(file_, positionOfOffset(text_, *tooDeep)) +
+                         nestingLimitMessage());
   }
+  std::optional<OrderedJson> root = parseOrderedJson(text_);
+  if (!root) failInvalidJson();
   positions_ = JsonPositions::scan(text_);
-  return root;
+  return std::move(*root);
 }
 
 void JsonReader::failInvalidJson() {

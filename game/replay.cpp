@@ -29,6 +29,10 @@ class ReplayParser {
   Replay parse() {
     if (text_.size() > kMaxReplayBytes)
       throw ReplayError(file_.string() + ": replay file is larger than the 16 MiB limit");
+    if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text_)) {
+      throw ReplayError(placeInFile(file_, positionOfOffset(text_, *tooDeep)) +
+                        nestingLimitMessage());
+    }
     Json root;
     try {
       root = Json::parse(text_);

@@ -34,15 +34,19 @@ std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::
   }
   if (!text) return std::nullopt;
 
-  nlohmann::ordered_json root;
-  try {
-    root = nlohmann::ordered_json::parse(*text);
-  } catch (const nlohmann::ordered_json::exception&) {
+  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(*text)) {
+    messages.push_back(placeInFile(file, positionOfOffset(*text, *tooDeep)) +
+                       nestingLimitMessage() + "; " + whenIgnored);
+    return std::nullopt;
+  }
+  std::optional<nlohmann::ordered_json> parsed = parseOrderedJson(*text);
+  if (!parsed) {
     const JsonSyntaxError error = firstJsonSyntaxError(*text);
     messages.push_back(placeInFile(file, positionOfOffset(*text, error.errorOffset)) +
                        "invalid JSON: " + error.reason + "; " + whenIgnored);
     return std::nullopt;
   }
+  nlohmann::ordered_json root = std::move(*parsed);
   if (!root.is_object()) {
     messages.push_back(placeInFile(file, {}) + "expected an object, got " + describeJson(root) +
                        "; " + whenIgnored);
