@@ -15,5 +15,6 @@ int commandDevices();
 int commandVersion();  // the version and the Vulkan device the game would use
 int commandReplay(const Options& options);
 int commandSoak(const Options& options);
+int commandBenchInput(const Options& options);
 
 }  // namespace app

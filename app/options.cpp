@@ -27,6 +27,9 @@ const std::vector<CommandSpec> kCommands{
     {"bench-quality", "<level.json>",
      "soft-shadow error (RMSE, SSIM) against GPU time: a table, a CSV\n"
      "and a log-log plot in --out DIR (default out/)"},
+    {"bench-input", "",
+     "time each file reader (level, replay, settings, progress, glTF)\n"
+     "on worst-shaped input at 1x, 4x and 16x size (docs/ROBUSTNESS.md)"},
     {"validate", "<level.json...>", "check levels and report the first error in each"},
     {"info", "<level.json>", "triangles, instances, lights and the features a level uses"},
     {"devices", "", "list Vulkan devices and whether they can run Sightline"},

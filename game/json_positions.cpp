@@ -207,27 +207,90 @@ std::string escapeJsonPointerToken(std::string_view token) {
   return escaped;
 }
 
-std::size_t JsonPositions::ChildHash::operator()(const ChildKey& key) const {
-  return std::hash<std::string_view>()(key.second) * 31 + key.first;
+std::size_t JsonPositions::hashOf(uint32_t parent, bool isKey, std::string_view key,
+                                  uint32_t index) {
+  const std::size_t token =
+      isKey ? std::hash<std::string_view>()(key) : index * 0x9E3779B97F4A7C15u;
+  return (token ^ (std::size_t(parent) * 0xC2B2AE3D27D4EB4Fu)) + (isKey ? 1 : 0);
 }
 
-uint32_t JsonPositions::child(uint32_t parent, std::string token, SourcePosition keyPosition,
-                              bool isKey) {
-  nodes_.push_back({parent, std::move(token), {}, keyPosition, isKey});
-  const uint32_t id = static_cast<uint32_t>(nodes_.size() - 1);
-  const auto [existing, added] = children_.try_emplace({parent, nodes_.back().token}, id);
-  if (added) return id;
-  nodes_.pop_back();  // a repeated key: its positions stay those of the first
-  if (isKey && !firstDuplicateKey_)
-    firstDuplicateKey_ = DuplicateKey{pointerOf(existing->second), keyPosition};
-  return existing->second;
+std::string_view JsonPositions::keyOf(const Node& node) const {
+  return std::string_view(keys_).substr(node.keyStart, node.keySize);
+}
+
+void JsonPositions::grow() {
+  std::vector<uint32_t> slots(std::max<std::size_t>(64, slots_.size() * 2), 0);
+  const std::size_t mask = slots.size() - 1;
+  for (uint32_t id = 1; id < nodes_.size(); ++id) {
+    const Node& node = nodes_[id];
+    std::size_t at = hashOf(node.parent, node.isKey, keyOf(node), node.index) & mask;
+    while (slots[at] != 0) at = (at + 1) & mask;
+    slots[at] = id + 1;
+  }
+  slots_ = std::move(slots);
+}
+
+uint32_t JsonPositions::child(uint32_t parent, bool isKey, std::string_view key, uint32_t index,
+                              SourcePosition keyPosition) {
+  if ((nodes_.size() + 1) * 2 > slots_.size()) grow();
+  const std::size_t mask = slots_.size() - 1;
+  std::size_t at = hashOf(parent, isKey, key, index) & mask;
+  for (; slots_[at] != 0; at = (at + 1) & mask) {
+    const uint32_t id = slots_[at] - 1;
+    const Node& existing = nodes_[id];
+    if (existing.parent != parent || existing.isKey != isKey) continue;
+    if (isKey ? keyOf(existing) != key : existing.index != index) continue;
+    // A repeated key: its positions stay those of the first.
+    if (isKey && !firstDuplicateKey_) firstDuplicateKey_ = DuplicateKey{pointerOf(id), keyPosition};
+    return id;
+  }
+  Node node;
+  node.parent = parent;
+  node.isKey = isKey;
+  node.index = index;
+  node.key = keyPosition;
+  if (isKey) {
+    node.keyStart = static_cast<uint32_t>(keys_.size());
+    node.keySize = static_cast<uint32_t>(key.size());
+    keys_ += key;
+  }
+  nodes_.push_back(node);
+  slots_[at] = static_cast<uint32_t>(nodes_.size());
+  return static_cast<uint32_t>(nodes_.size() - 1);
+}
+
+std::optional<uint32_t> JsonPositions::findChild(uint32_t parent, std::string_view token) const {
+  if (slots_.empty()) return std::nullopt;
+  const std::size_t mask = slots_.size() - 1;
+  // A token of digits may name an array element or an object member.
+  uint32_t index = 0;
+  bool isIndex = !token.empty() && token.size() <= 9;
+  for (const char c : token) {
+    if (c < '0' || c > '9') isIndex = false;
+    if (isIndex) index = index * 10 + uint32_t(c - '0');
+  }
+  for (const bool isKey : {true, false}) {
+    if (!isKey && !isIndex) break;
+    for (std::size_t at = hashOf(parent, isKey, token, index) & mask; slots_[at] != 0;
+         at = (at + 1) & mask) {
+      const Node& node = nodes_[slots_[at] - 1];
+      if (node.parent == parent && node.isKey == isKey &&
+          (isKey ? keyOf(node) == token : node.index == index))
+        return slots_[at] - 1;
+    }
+  }
+  return std::nullopt;
 }
 
 std::string JsonPositions::pointerOf(uint32_t node) const {
-  std::vector<const std::string*> tokens;
-  for (uint32_t at = node; at != 0; at = nodes_[at].parent) tokens.push_back(&nodes_[at].token);
+  std::vector<uint32_t> path;
+  for (uint32_t at = node; at != 0; at = nodes_[at].parent) path.push_back(at);
   std::string pointer;
-  for (auto token = tokens.rbegin(); token != tokens.rend(); ++token) pointer += "/" + **token;
+  for (auto at = path.rbegin(); at != path.rend(); ++at) {
+    const Node& step = nodes_[*at];
+    pointer += "/";
+    pointer += step.isKey ? std::string(keyOf(step)) : std::to_string(step.index);
+  }
   return pointer;
 }
 
@@ -237,10 +300,10 @@ std::pair<uint32_t, bool> JsonPositions::find(const std::string& pointer) const 
   std::size_t start = 0;
   while (start < pointer.size()) {
     const std::size_t end = std::min(pointer.find('/', start + 1), pointer.size());
-    const std::string_view token(pointer.data() + start + 1, end - start - 1);
-    const auto found = children_.find({node, token});
-    if (found == children_.end()) return {node, false};
-    node = found->second;
+    const std::optional<uint32_t> found =
+        findChild(node, std::string_view(pointer).substr(start + 1, end - start - 1));
+    if (!found) return {node, false};
+    node = *found;
     start = end;
   }
   return {node, true};
@@ -249,7 +312,7 @@ std::pair<uint32_t, bool> JsonPositions::find(const std::string& pointer) const 
 JsonPositions JsonPositions::scan(std::string_view text) {
   JsonPositions result;
   if (text.empty()) return result;
-  result.nodes_.push_back({0, {}, {}, {}, false});  // the root
+  result.nodes_.emplace_back();  // the root
   Scanner scanner(text);
   std::vector<OpenContainer> open;
   uint32_t node = 0;  // of the value about to be read
@@ -257,8 +320,8 @@ JsonPositions JsonPositions::scan(std::string_view text) {
   // Reads an object member's key and leaves the scanner at the start of its value.
   auto readMemberKey = [&]() {
     const SourcePosition keyPosition = scanner.position();
-    node = result.child(open.back().node, escapeJsonPointerToken(scanner.readString()), keyPosition,
-                        true);
+    const std::string key = escapeJsonPointerToken(scanner.readString());
+    node = result.child(open.back().node, true, key, 0, keyPosition);
     scanner.skipWhitespace();
     scanner.advance();  // ':'
     scanner.skipWhitespace();
@@ -284,7 +347,7 @@ JsonPositions JsonPositions::scan(std::string_view text) {
           open.pop_back();
           expectingValue = false;
         } else if (c == '[') {
-          node = result.child(open.back().node, "0", {}, false);
+          node = result.child(open.back().node, false, {}, 0, {});
           open.back().nextIndex = 1;
         } else {
           readMemberKey();
@@ -309,7 +372,8 @@ JsonPositions JsonPositions::scan(std::string_view text) {
       scanner.skipWhitespace();
       OpenContainer& container = open.back();
       if (container.isArray) {
-        node = result.child(container.node, std::to_string(container.nextIndex++), {}, false);
+        node = result.child(container.node, false, {}, static_cast<uint32_t>(container.nextIndex++),
+                            {});
       } else {
         readMemberKey();
       }

@@ -4,12 +4,11 @@
 // every object key) starts, indexed by JSON pointer.
 #include <cstddef>
 #include <cstdint>
-#include <deque>
 #include <optional>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <utility>
+#include <vector>
 
 namespace game {
 
@@ -43,28 +42,35 @@ class JsonPositions {
   std::optional<std::string> pointerOfValueAt(SourcePosition position) const;
 
  private:
-  // Every value read, as a tree: each node knows its parent and its pointer token, and is
-  // found from them, so memory stays linear in the text however deep or long the keys.
+  // Every value read, as a tree: each node knows its parent and its pointer token (an object
+  // key, kept in `keys_`, or an array index), and is found from them through one open-addressing
+  // table, so time and memory stay linear in the text however deep, wide or long-keyed it is.
   struct Node {
-    uint32_t parent;
-    std::string token;     // escaped pointer token: the key, or the array index
+    uint32_t parent = 0;
+    uint32_t keyStart = 0;  // object members: the escaped key at keys_[keyStart, +keySize)
+    uint32_t keySize = 0;
+    uint32_t index = 0;    // array elements: the index
     SourcePosition value;  // where the value starts
     SourcePosition key;    // where its key starts (object members)
-    bool isKey;            // an object member
+    bool isKey = false;    // an object member (else an array element or the root)
     bool valueRecorded = false;
   };
-  using ChildKey = std::pair<uint32_t, std::string_view>;  // parent, token (in the node)
-  struct ChildHash {
-    std::size_t operator()(const ChildKey& key) const;
-  };
 
-  // Records a child of `parent` (or finds the one a repeated key already made).
-  uint32_t child(uint32_t parent, std::string token, SourcePosition keyPosition, bool isKey);
+  // Records a child of `parent`: the member `key` (escaped) or element `index`; a repeated key
+  // gives the node the first one made.
+  uint32_t child(uint32_t parent, bool isKey, std::string_view key, uint32_t index,
+                 SourcePosition keyPosition);
+  std::string_view keyOf(const Node& node) const;
+  // The child of `parent` with `token` (a pointer token: a key, or an index of an array).
+  std::optional<uint32_t> findChild(uint32_t parent, std::string_view token) const;
+  static std::size_t hashOf(uint32_t parent, bool isKey, std::string_view key, uint32_t index);
+  void grow();
   std::string pointerOf(uint32_t node) const;
   std::pair<uint32_t, bool> find(const std::string& pointer) const;
 
-  std::deque<Node> nodes_;  // node 0 is the root; a deque keeps tokens where the keys point
-  std::unordered_map<ChildKey, uint32_t, ChildHash> children_;
+  std::vector<Node> nodes_;      // node 0 is the root
+  std::string keys_;             // every member's escaped key, end to end
+  std::vector<uint32_t> slots_;  // node id + 1 (0: empty), by hash; at most half full
   std::optional<DuplicateKey> firstDuplicateKey_;
 };
 

@@ -59,7 +59,7 @@ void writeTexturedQuadModel(const fs::path& path, const nlohmann::json& material
       test::packed(std::vector<float>{1, 1, 0, 1, 0, 0, 1, 0}), test::kFloat, 4, "VEC2");
   quad["material"] = 0;
   gltf.addMesh("quad", {quad});
-  gltf.document["materials"] = {material};
+  gltf.document["materials"] = nlohmann::json::array({material});
   gltf.document["textures"] = nlohmann::json::array();
   gltf.document["images"] = nlohmann::json::array();
   for (std::size_t i = 0; i < images.size(); ++i) {
