@@ -425,6 +425,36 @@ GltfBuilder texturedTriangle(const json& image) {
   return gltf;
 }
 
+// KHR_texture_transform is read into the texture's mapping; a malformed one is an error that
+// names the material, the texture and the field.
+TEST_F(GltfModelTest, texture_transform_is_read_and_a_malformed_one_is_named) {
+  GltfBuilder gltf = texturedTriangle({{"uri", "data:image/png;base64," + base64(tinyPng())}});
+  json& info = gltf.document["materials"][0]["pbrMetallicRoughness"]["baseColorTexture"];
+  info["extensions"]["KHR_texture_transform"] = {
+      {"offset", {0.25, -1}}, {"rotation", 0.5}, {"scale", {2, 3}}, {"texCoord", 1}};
+  gltf.write(root_ / "moved.gltf");
+  const game::GltfModel model = game::loadGltfModel(root_ / "moved.gltf", root_);
+  const scene::TextureMapping& mapping = model.materials.at(0).textureMappings[0];
+  EXPECT_EQ(mapping.uvSet, 1u);
+  EXPECT_EQ(mapping.offset, glm::vec2(0.25f, -1.0f));
+  EXPECT_EQ(mapping.rotationRadians, 0.5f);
+  EXPECT_EQ(mapping.scale, glm::vec2(2.0f, 3.0f));
+  EXPECT_TRUE(model.warnings.empty());
+
+  info["extensions"]["KHR_texture_transform"] = {{"offset", {0.25}}};
+  gltf.write(root_ / "short.gltf");
+  EXPECT_EQ(loadError(root_ / "short.gltf"),
+            (root_ / "short.gltf").string() +
+                ": material 0 baseColorTexture KHR_texture_transform offset must be an array of 2 "
+                "numbers in [-1e6, 1e6]");
+  info["extensions"]["KHR_texture_transform"] = {{"texCoord", 0.5}};
+  gltf.write(root_ / "half.gltf");
+  EXPECT_EQ(loadError(root_ / "half.gltf"),
+            (root_ / "half.gltf").string() +
+                ": material 0 baseColorTexture KHR_texture_transform texCoord must be a whole "
+                "number >= 0");
+}
+
 TEST_F(GltfModelTest, embedded_data_uri_image_is_decoded) {
   texturedTriangle({{"uri", "data:image/png;base64," + base64(tinyPng())}})
       .write(root_ / "embedded.gltf");
