@@ -6,8 +6,9 @@
 #include "denoise_common.glsl"
 
 // Temporal pass: reproject last frame's history, reject it where the surface changed (depth,
-// normal, instance), clamp it to the current 3x3 neighbourhood, and blend in this frame's
-// sample; also keeps luminance moments for the variance the spatial filter steers by.
+// normal, instance), clamp it to the range of this frame's 5x5 neighbourhood (below), and blend
+// in this frame's sample; also keeps luminance moments for the variance the spatial filter
+// steers by.
 // In reference mode it is a plain running average with no clamping and no cap.
 
 const float MAX_HISTORY_LENGTH = float(DENOISER_MAX_HISTORY);
