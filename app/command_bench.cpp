@@ -16,6 +16,7 @@
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
 #include "reference/embree_tracer.hpp"
+#include "render/frame_time_percentiles.hpp"
 #include "render/pipeline_variant.hpp"
 #include "render/renderer.hpp"
 #include "sim/simulation.hpp"
@@ -32,8 +33,9 @@ double millisecondsSince(Clock::time_point start) {
 }
 
 struct Measurement {
-  double medianMs = 0.0;          // host time from submit to fence
-  render::PassTimes passMedians;  // each pass's median GPU time on its own
+  double medianMs = 0.0;                     // host time from submit to fence
+  render::FrameTimePercentiles percentiles;  // of the same host times
+  render::PassTimes passMedians;             // each pass's median GPU time on its own
   uint64_t surfaceRays = 0, secondaryRays = 0;
   size_t triangles = 0;
   uint64_t rays() const { return surfaceRays + secondaryRays; }
@@ -86,6 +88,7 @@ Measurement measure(const render::Context& context, render::ShaderCompiler& comp
     result.secondaryRays = stats.secondaryRays;
   }
   result.medianMs = median(times);
+  result.percentiles = render::frameTimePercentiles(times);
   result.passMedians = {median(trace), median(denoise), median(tonemap), median(readback)};
   result.triangles = renderer.triangleCount();
   if (withReference) {
@@ -183,6 +186,9 @@ void writeJson(const fs::path& file, const render::Context& context, uint32_t em
                                     {"height", row.height},
                                     {"frames", row.frames},
                                     {"median_ms", row.own.medianMs},
+                                    {"p95_ms", row.own.percentiles.p95},
+                                    {"p99_ms", row.own.percentiles.p99},
+                                    {"worst_ms", row.own.percentiles.worst},
                                     {"fps", row.fps()},
                                     {"mrays_per_s", row.mraysPerSecond()},
                                     {"surface_rays_per_frame", row.own.surfaceRays},
@@ -279,6 +285,12 @@ int commandBench(const Options& options) {
       std::fflush(stdout);
       rows.push_back(std::move(row));
     }
+  }
+  // The slow tail, which a player feels more than the median.
+  std::printf("\nframe time percentiles of the own variant (host, submit to fence):\n");
+  for (const BenchRow& row : rows) {
+    std::printf("%-22s %4ux%-4u %s\n", row.level.c_str(), row.width, row.height,
+                row.own.percentiles.text().c_str());
   }
   if (options.csv) writeCsv(*options.csv, rows);
   if (options.json) writeJson(*options.json, context, kEmbreeThreads, rows);

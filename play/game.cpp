@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include <GLFW/glfw3.h>
 
@@ -9,6 +10,7 @@
 #include "play/hud.hpp"
 #include "play/recording.hpp"
 #include "render/context.hpp"
+#include "render/frame_time_percentiles.hpp"
 #include "render/presenter.hpp"
 
 namespace play {
@@ -48,6 +50,7 @@ int Game::run(const fs::path& firstLevel) {
   const double started = glfwGetTime();
   double titleAt = started;
   uint32_t framesSinceTitle = 0;
+  std::vector<double> frameMilliseconds;  // every frame's, for the percentiles at the end
   while (!glfwWindowShouldClose(window_)) {
     if (paused_)
       glfwWaitEventsTimeout(0.05);  // nothing moves: no need to spin
@@ -57,6 +60,7 @@ int Game::run(const fs::path& firstLevel) {
     const double now = glfwGetTime();
     const double elapsed = now - played_.lastFrameAt;
     played_.lastFrameAt = now;
+    frameMilliseconds.push_back(elapsed * 1000.0);
     bool quitting = false;
     if (!paused_) {
       gatherMouseLook(window_, look_, settings_);
@@ -84,10 +88,11 @@ int Game::run(const fs::path& firstLevel) {
       if (options_.capture &&
           !writeCapture(presenter_, *options_.capture, played_.simulation->tick()))
         captureFailed_ = true;
-      std::printf("quit after %llu ticks, %llu frames shown (%.1f fps)\n",
+      std::printf("quit after %llu ticks, %llu frames shown (%.1f fps); frame times %s\n",
                   static_cast<unsigned long long>(ticksPlayed_),
                   static_cast<unsigned long long>(framesShown_),
-                  double(framesShown_) / std::max(now - started, 1e-3));
+                  double(framesShown_) / std::max(now - started, 1e-3),
+                  render::frameTimePercentiles(frameMilliseconds).text().c_str());
       break;
     }
     if (menu_.quitRequested) glfwSetWindowShouldClose(window_, GLFW_TRUE);
