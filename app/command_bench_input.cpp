@@ -211,7 +211,7 @@ int commandBenchInput(const Options&) {
        genericShapes("{\"progress\": 1, \"completed\": ", "}"), 4096},
       {"progress", progressReader(directory), {{"many completed levels", manyCompleted}}, 2048},
       {"glTF", gltfReader(directory),
-       genericShapes("{\"asset\": {\"version\": \"2.0\", \"extras\": ", "}}"), 16384},
+       genericShapes("{\"asset\": {\"version\": \"2.0\"}, \"extras\": ", "}"), 16384},
   };
   std::printf("Each reader on worst-shaped input at 1x, 4x and 16x the size; best of 3 runs.\n");
   std::printf("Linear growth gives ratios near 4 and 16. Sizes stay under each format's limit\n");

@@ -1,6 +1,7 @@
 #include "game/json_document.hpp"
 
-#include <unordered_map>
+#include <algorithm>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -52,7 +53,8 @@ struct FirstErrorSax : nlohmann::json_sax<nlohmann::json> {
 };
 
 // Builds an ordered_json from SAX events, appending object members without nlohmann's linear
-// search for an existing key: each open object keeps a hash index of its keys instead.
+// search for an existing key: the members of every object are found through one open-addressing
+// table keyed by (object, key), so a file of many keys costs time linear in its size.
 class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
  public:
   using Json = nlohmann::ordered_json;
@@ -86,11 +88,35 @@ class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
 
   struct Open {
     Json* value;
-    std::string key;                                     // the member being read (objects)
-    std::unordered_map<std::string, std::size_t> index;  // key -> member (objects)
+    uint32_t object;  // objects: its number, for the member table
+    std::string key;  // objects: the member being read
   };
 
-  // Places `value` in the open array or object (or as the root); returns where it now lives.
+  // A member of an object: the object's number and the member's place in it (+ 1; 0: empty).
+  struct Slot {
+    std::size_t hash = 0;
+    uint32_t object = 0;
+    uint32_t member = 0;
+  };
+
+  static std::size_t hashOf(uint32_t object, const std::string& key) {
+    return std::hash<std::string>()(key) ^ (std::size_t(object) * 0x9E3779B97F4A7C15u);
+  }
+
+  void grow() {
+    std::vector<Slot> slots(std::max<std::size_t>(64, slots_.size() * 2));
+    const std::size_t mask = slots.size() - 1;
+    for (const Slot& slot : slots_) {
+      if (slot.member == 0) continue;
+      std::size_t at = slot.hash & mask;
+      while (slots[at].member != 0) at = (at + 1) & mask;
+      slots[at] = slot;
+    }
+    slots_ = std::move(slots);
+  }
+
+  // Places `value` in the open array or object (or as the root); returns where it now lives. A
+  // repeated key keeps its first place and takes the new value, as nlohmann's parser does.
   Json* place(Json value) {
     if (open_.empty()) {
       root = std::move(value);
@@ -102,12 +128,21 @@ class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
       return &parent.value->get_ref<Json::array_t&>().back();
     }
     Members& members = parent.value->get_ref<Json::object_t&>();
-    const auto [found, added] = parent.index.try_emplace(parent.key, members.size());
-    if (!added) {
-      members[found->second].second = std::move(value);
-      return &members[found->second].second;
+    if ((members_ + 1) * 2 > slots_.size()) grow();
+    const std::size_t mask = slots_.size() - 1;
+    const std::size_t hash = hashOf(parent.object, parent.key);
+    std::size_t at = hash & mask;
+    for (; slots_[at].member != 0; at = (at + 1) & mask) {
+      const Slot& slot = slots_[at];
+      if (slot.hash == hash && slot.object == parent.object &&
+          members[slot.member - 1].first == parent.key) {
+        members[slot.member - 1].second = std::move(value);
+        return &members[slot.member - 1].second;
+      }
     }
     members.emplace_back(parent.key, std::move(value));
+    slots_[at] = {hash, parent.object, static_cast<uint32_t>(members.size())};
+    ++members_;
     return &members.back().second;
   }
 
@@ -118,7 +153,8 @@ class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
 
   // A child's address stays valid while it is open: its parent grows only after it closes.
   bool open(Json container) {
-    open_.push_back({place(std::move(container)), {}, {}});
+    const bool object = container.is_object();
+    open_.push_back({place(std::move(container)), object ? ++objects_ : 0u, {}});
     return true;
   }
 
@@ -128,6 +164,9 @@ class OrderedJsonBuilder : public nlohmann::json_sax<nlohmann::ordered_json> {
   }
 
   std::vector<Open> open_;
+  std::vector<Slot> slots_;  // every object's members; at most half full
+  std::size_t members_ = 0;  // slots in use
+  uint32_t objects_ = 0;     // objects opened so far
 };
 
 }  // namespace

@@ -218,14 +218,29 @@ std::string_view JsonPositions::keyOf(const Node& node) const {
   return std::string_view(keys_).substr(node.keyStart, node.keySize);
 }
 
+// A slot holds the node id + 1 in its low half (0: empty) and the upper half of the node's hash
+// in its high half, so a probe passes other nodes without reading them.
+namespace {
+uint64_t slotOf(std::size_t hash, uint32_t id) {
+  return (uint64_t(hash >> 32) << 32) | (uint64_t(id) + 1);
+}
+bool hashMatches(uint64_t slot, std::size_t hash) {
+  return (slot >> 32) == (uint64_t(hash) >> 32);
+}
+uint32_t idOf(uint64_t slot) {
+  return uint32_t(slot & 0xFFFFFFFFu) - 1;
+}
+}  // namespace
+
 void JsonPositions::grow() {
-  std::vector<uint32_t> slots(std::max<std::size_t>(64, slots_.size() * 2), 0);
+  std::vector<uint64_t> slots(std::max<std::size_t>(64, slots_.size() * 2), 0);
   const std::size_t mask = slots.size() - 1;
   for (uint32_t id = 1; id < nodes_.size(); ++id) {
     const Node& node = nodes_[id];
-    std::size_t at = hashOf(node.parent, node.isKey, keyOf(node), node.index) & mask;
+    const std::size_t hash = hashOf(node.parent, node.isKey, keyOf(node), node.index);
+    std::size_t at = hash & mask;
     while (slots[at] != 0) at = (at + 1) & mask;
-    slots[at] = id + 1;
+    slots[at] = slotOf(hash, id);
   }
   slots_ = std::move(slots);
 }
@@ -234,9 +249,11 @@ uint32_t JsonPositions::child(uint32_t parent, bool isKey, std::string_view key,
                               SourcePosition keyPosition) {
   if ((nodes_.size() + 1) * 2 > slots_.size()) grow();
   const std::size_t mask = slots_.size() - 1;
-  std::size_t at = hashOf(parent, isKey, key, index) & mask;
+  const std::size_t hash = hashOf(parent, isKey, key, index);
+  std::size_t at = hash & mask;
   for (; slots_[at] != 0; at = (at + 1) & mask) {
-    const uint32_t id = slots_[at] - 1;
+    if (!hashMatches(slots_[at], hash)) continue;
+    const uint32_t id = idOf(slots_[at]);
     const Node& existing = nodes_[id];
     if (existing.parent != parent || existing.isKey != isKey) continue;
     if (isKey ? keyOf(existing) != key : existing.index != index) continue;
@@ -255,7 +272,7 @@ uint32_t JsonPositions::child(uint32_t parent, bool isKey, std::string_view key,
     keys_ += key;
   }
   nodes_.push_back(node);
-  slots_[at] = static_cast<uint32_t>(nodes_.size());
+  slots_[at] = slotOf(hash, static_cast<uint32_t>(nodes_.size() - 1));
   return static_cast<uint32_t>(nodes_.size() - 1);
 }
 
@@ -271,12 +288,13 @@ std::optional<uint32_t> JsonPositions::findChild(uint32_t parent, std::string_vi
   }
   for (const bool isKey : {true, false}) {
     if (!isKey && !isIndex) break;
-    for (std::size_t at = hashOf(parent, isKey, token, index) & mask; slots_[at] != 0;
-         at = (at + 1) & mask) {
-      const Node& node = nodes_[slots_[at] - 1];
+    const std::size_t hash = hashOf(parent, isKey, token, index);
+    for (std::size_t at = hash & mask; slots_[at] != 0; at = (at + 1) & mask) {
+      if (!hashMatches(slots_[at], hash)) continue;
+      const Node& node = nodes_[idOf(slots_[at])];
       if (node.parent == parent && node.isKey == isKey &&
           (isKey ? keyOf(node) == token : node.index == index))
-        return slots_[at] - 1;
+        return idOf(slots_[at]);
     }
   }
   return std::nullopt;

@@ -70,7 +70,7 @@ class JsonPositions {
 
   std::vector<Node> nodes_;      // node 0 is the root
   std::string keys_;             // every member's escaped key, end to end
-  std::vector<uint32_t> slots_;  // node id + 1 (0: empty), by hash; at most half full
+  std::vector<uint64_t> slots_;  // node id + 1 and half its hash (0: empty); at most half full
   std::optional<DuplicateKey> firstDuplicateKey_;
 };
 
