@@ -82,7 +82,7 @@ std::string deepBlocks(std::size_t count) {
   const std::size_t depth = game::kMaxJsonNesting - 2;
   std::string block = std::string(depth, '[') + std::string(depth, ']');
   std::string text = "[";
-  for (std::size_t i = 0; i < count / 8; ++i) text += (i ? "," : "") + block;
+  for (std::size_t i = 0; i < count / 16; ++i) text += (i ? "," : "") + block;
   return text + "]";
 }
 

@@ -21,8 +21,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Refuses a model whose JSON (a .glb's JSON chunk) nests deeper than kMaxJsonNesting, before
-// tinygltf builds a tree of it.
+// Refuses a model whose JSON (a .glb's JSON chunk) nests deeper than kMaxJsonNesting or holds
+// more than kMaxJsonContainers arrays and objects, before tinygltf builds a tree of it.
 void checkJsonNesting(const fs::path& file, bool binary) {
   constexpr std::size_t kMaxJsonBytes = 256u << 20;  // the most tinygltf is given to read
   std::ifstream stream(file, std::ios::binary);
@@ -37,10 +37,10 @@ void checkJsonNesting(const fs::path& file, bool binary) {
   }
   std::string text = readAtMostPastLimit(stream, jsonBytes);
   text.resize(std::min(text.size(), jsonBytes));
-  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text)) {
-    const SourcePosition at = positionOfOffset(text, *tooDeep);
+  if (const std::optional<JsonShapeProblem> problem = jsonShapeProblem(text)) {
+    const SourcePosition at = positionOfOffset(text, problem->offset);
     gltf::fail(file, "invalid glTF JSON at line " + std::to_string(at.line) + ", column " +
-                         std::to_string(at.column) + ": " + nestingLimitMessage());
+                         std::to_string(at.column) + ": " + problem->message);
   }
 }
 

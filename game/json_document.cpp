@@ -198,8 +198,9 @@ JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
   return error;
 }
 
-std::optional<std::size_t> offsetPastNesting(std::string_view text, std::size_t maxNesting) {
-  std::size_t depth = 0;
+std::optional<JsonShapeProblem> jsonShapeProblem(std::string_view text, std::size_t maxNesting,
+                                                 std::size_t maxContainers) {
+  std::size_t depth = 0, containers = 0;
   bool inString = false;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
@@ -212,17 +213,19 @@ std::optional<std::size_t> offsetPastNesting(std::string_view text, std::size_t 
     } else if (c == '"') {
       inString = true;
     } else if (c == '[' || c == '{') {
-      if (++depth > maxNesting) return i;
+      if (++depth > maxNesting) {
+        return JsonShapeProblem{i, "arrays and objects nest more than " +
+                                       std::to_string(maxNesting) + " deep here, the limit"};
+      }
+      if (++containers > maxContainers) {
+        return JsonShapeProblem{i, "more than " + std::to_string(maxContainers) +
+                                       " arrays and objects in the file, the limit"};
+      }
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
     }
   }
   return std::nullopt;
-}
-
-std::string nestingLimitMessage() {
-  return "arrays and objects nest more than " + std::to_string(kMaxJsonNesting) +
-         " deep here, the limit";
 }
 
 std::string fileLineColumn(const std::filesystem::path& file, SourcePosition at) {

@@ -33,14 +33,22 @@ struct JsonSyntaxError {
 // their limit about 25), and a reader checks it before building a tree, so deep nesting cannot
 // cost more than linear time.
 inline constexpr std::size_t kMaxJsonNesting = 64;
+// And there may be at most this many arrays and objects in one file: each costs about a hundred
+// bytes once read, so 16 MiB of "[[[]]]" would take a gigabyte; a level needs some tens of
+// thousands, an hour's replay under a million.
+inline constexpr std::size_t kMaxJsonContainers = 2'000'000;
 
-// The offset of the first '[' or '{' in `text` that opens an array or object nested deeper than
-// `maxNesting`, if one does. One pass, skipping strings; `text` need not be valid JSON.
-std::optional<std::size_t> offsetPastNesting(std::string_view text,
-                                             std::size_t maxNesting = kMaxJsonNesting);
+// Where a JSON text goes past one of the limits above, and what it says.
+struct JsonShapeProblem {
+  std::size_t offset = 0;  // the '[' or '{' too deep, or the one too many
+  std::string message;     // "arrays and objects nest more than 64 deep here, the limit"
+};
 
-// "arrays and objects nest more than 64 deep here, the limit" (the message for the above).
-std::string nestingLimitMessage();
+// The first place `text` goes past `maxNesting` or `maxContainers`, if it does. One pass,
+// skipping strings; `text` need not be valid JSON.
+std::optional<JsonShapeProblem> jsonShapeProblem(std::string_view text,
+                                                 std::size_t maxNesting = kMaxJsonNesting,
+                                                 std::size_t maxContainers = kMaxJsonContainers);
 
 // `text` parsed into an ordered_json (members in file order), in time linear in its size
 // (nlohmann's own parse looks each key up in the object's members so far, quadratic in their

@@ -139,9 +139,9 @@ std::string NumberRule::describe() const {
 }
 
 OrderedJson JsonReader::parse() {
-  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text_)) {
-    throw JsonInputError(placeInFile(file_, positionOfOffset(text_, *tooDeep)) +
-                         nestingLimitMessage());
+  if (const std::optional<JsonShapeProblem> problem = jsonShapeProblem(text_)) {
+    throw JsonInputError(placeInFile(file_, positionOfOffset(text_, problem->offset)) +
+                         problem->message);
   }
   std::optional<OrderedJson> root = parseOrderedJson(text_);
   if (!root) failInvalidJson();

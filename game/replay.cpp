@@ -29,9 +29,9 @@ class ReplayParser {
   Replay parse() {
     if (text_.size() > kMaxReplayBytes)
       throw ReplayError(file_.string() + ": replay file is larger than the 16 MiB limit");
-    if (const std::optional<std::size_t> tooDeep = offsetPastNesting(text_)) {
-      throw ReplayError(placeInFile(file_, positionOfOffset(text_, *tooDeep)) +
-                        nestingLimitMessage());
+    if (const std::optional<JsonShapeProblem> problem = jsonShapeProblem(text_)) {
+      throw ReplayError(placeInFile(file_, positionOfOffset(text_, problem->offset)) +
+                        problem->message);
     }
     Json root;
     try {

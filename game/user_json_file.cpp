@@ -34,9 +34,9 @@ std::optional<UserJsonFile> UserJsonFile::open(const fs::path& file, const std::
   }
   if (!text) return std::nullopt;
 
-  if (const std::optional<std::size_t> tooDeep = offsetPastNesting(*text)) {
-    messages.push_back(placeInFile(file, positionOfOffset(*text, *tooDeep)) +
-                       nestingLimitMessage() + "; " + whenIgnored);
+  if (const std::optional<JsonShapeProblem> problem = jsonShapeProblem(*text)) {
+    messages.push_back(placeInFile(file, positionOfOffset(*text, problem->offset)) +
+                       problem->message + "; " + whenIgnored);
     return std::nullopt;
   }
   std::optional<nlohmann::ordered_json> parsed = parseOrderedJson(*text);

@@ -4,6 +4,7 @@
 // linear time. No timings here: a regression shows as a test that runs for minutes.
 #include <cstdint>
 #include <cstring>
+#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -30,12 +31,32 @@ std::string nestedArrays(std::size_t depth) {
 
 const std::string kTooDeepMessage = "arrays and objects nest more than 64 deep here, the limit";
 
+std::optional<std::size_t> offsetOfProblem(const std::string& text, std::size_t maxNesting = 64,
+                                           std::size_t maxContainers = 2'000'000) {
+  const auto problem = game::jsonShapeProblem(text, maxNesting, maxContainers);
+  return problem ? std::optional<std::size_t>(problem->offset) : std::nullopt;
+}
+
 TEST(JsonNesting, the_first_bracket_past_the_limit_is_found_outside_strings) {
-  EXPECT_EQ(game::offsetPastNesting(nestedArrays(64)), std::nullopt);
-  EXPECT_EQ(game::offsetPastNesting(nestedArrays(65)), 64u);
+  EXPECT_EQ(offsetOfProblem(nestedArrays(64)), std::nullopt);
+  EXPECT_EQ(offsetOfProblem(nestedArrays(65)), 64u);
   // Brackets in strings, escaped quotes included, do not count.
-  EXPECT_EQ(game::offsetPastNesting("[\"" + std::string(100, '[') + "\\\"[\"]"), std::nullopt);
-  EXPECT_EQ(game::offsetPastNesting("{\"a\": " + nestedArrays(200) + "}", 64), 69u);
+  EXPECT_EQ(offsetOfProblem("[\"" + std::string(100, '[') + "\\\"[\"]"), std::nullopt);
+  EXPECT_EQ(offsetOfProblem("{\"a\": " + nestedArrays(200) + "}", 64), 69u);
+}
+
+// 16 MiB of "[]" would be 8 million arrays, about a gigabyte once read: past 2 000 000 arrays
+// and objects a file is refused at the one too many.
+TEST(JsonNesting, arrays_and_objects_past_the_count_limit_are_refused) {
+  std::string many = "[";
+  for (int i = 0; i < 2'000'001; ++i) many += i ? ",[]" : "[]";
+  many += "]";
+  const auto problem = game::jsonShapeProblem(many);
+  ASSERT_TRUE(problem.has_value());
+  EXPECT_EQ(problem->offset, 3u * 1'999'999u + 1u);  // the 2 000 000th "[]" inside
+  EXPECT_EQ(problem->message, "more than 2000000 arrays and objects in the file, the limit");
+  EXPECT_EQ(game::jsonShapeProblem("[" + std::string("[],[],[]") + "]", 64, 4), std::nullopt);
+  EXPECT_EQ(offsetOfProblem("[{},[],{\"a\":[]}]", 64, 4), 12u);
 }
 
 TEST(JsonNesting, a_level_names_the_place_where_nesting_passes_the_limit) {
