@@ -4,27 +4,13 @@
 // finding.
 #include <cstddef>
 #include <cstdint>
-#include <exception>
-#include <filesystem>
-#include <string>
 
 #include "game/progress.hpp"
 #include "user_file_fuzz.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const std::filesystem::path file = fuzz::writeInput("progress.json", data, size);
-  game::ProgressLoad load;
-  try {
-    load = game::loadProgress(file);
-  } catch (const std::exception& error) {
-    fuzz::die("loadProgress threw", error.what());
-  }
-  fuzz::checkMessages(load.messages, file);
-  const std::filesystem::path again = file.parent_path() / "saved_progress.json";
-  game::saveProgress(load.progress, again);
-  const game::ProgressLoad reloaded = game::loadProgress(again);
-  if (!reloaded.messages.empty())
-    fuzz::die("saved progress loads with a message", reloaded.messages[0]);
-  if (!(reloaded.progress == load.progress)) fuzz::die("progress changed in a save and load", "");
+  fuzz::checkUserFile(
+      "progress.json", data, size, [](const auto& path) { return game::loadProgress(path); },
+      [](const game::ProgressLoad& load) { return load.progress; }, game::saveProgress);
   return 0;
 }

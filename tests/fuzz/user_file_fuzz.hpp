@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -38,6 +39,27 @@ inline void checkMessages(const std::vector<std::string>& messages,
       die("a message does not start with the file", message);
     if (message.find('\n') != std::string::npos) die("a message spans lines", message);
   }
+}
+
+// The whole check for one user file: `name` holds the input; `load(path)` gives a result with
+// `messages`, and `held(result)` what it holds; `save(held, path)` writes that back.
+template <typename Load, typename Held, typename Save>
+void checkUserFile(const std::string& name, const uint8_t* data, std::size_t size, Load load,
+                   Held held, Save save) {
+  const std::filesystem::path file = writeInput(name, data, size);
+  decltype(load(file)) loaded;
+  try {
+    loaded = load(file);
+  } catch (const std::exception& error) {
+    die("loading " + name + " threw", error.what());
+  }
+  checkMessages(loaded.messages, file);
+  const std::filesystem::path again = file.parent_path() / ("saved_" + name);
+  save(held(loaded), again);
+  const auto reloaded = load(again);
+  if (!reloaded.messages.empty())
+    die("saved " + name + " loads with a message", reloaded.messages[0]);
+  if (!(held(reloaded) == held(loaded))) die(name + " changed in a save and load", "");
 }
 
 }  // namespace fuzz
