@@ -120,15 +120,15 @@ struct Shape {
 // The generic shapes placed in a file at `before` ... `after` (where the reader looks).
 std::vector<Shape> genericShapes(const std::string& before, const std::string& after) {
   std::vector<Shape> shapes;
-  for (const auto& [name, value] :
-       std::vector<std::pair<std::string, std::function<std::string(std::size_t)>>>{
-           {"deep nesting", deepBlocks},
-           {"many keys", manyKeys},
-           {"long string", longString},
-           {"long array of numbers", manyNumbers},
-           {"long keys over deep nesting", longKeysDeep}}) {
-    shapes.push_back({name, [before, after, value](std::size_t count) {
-                        return before + value(count) + after;
+  const std::vector<Shape> values = {{"deep nesting", deepBlocks},
+                                     {"many keys", manyKeys},
+                                     {"long string", longString},
+                                     {"long array of numbers", manyNumbers},
+                                     {"long keys over deep nesting", longKeysDeep}};
+  for (const Shape& value : values) {
+    const std::function<std::string(std::size_t)> text = value.text;
+    shapes.push_back({value.name, [before, after, text](std::size_t count) {
+                        return before + text(count) + after;
                       }});
   }
   return shapes;

@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // Refuses a model whose JSON (a .glb's JSON chunk) nests deeper than kMaxJsonNesting or holds
-// more than kMaxJsonContainers arrays and objects, before tinygltf builds a tree of it.
+// more than kMaxJsonValues values, before tinygltf builds a tree of it.
 void checkJsonNesting(const fs::path& file, bool binary) {
   constexpr std::size_t kMaxJsonBytes = 256u << 20;  // the most tinygltf is given to read
   std::ifstream stream(file, std::ios::binary);

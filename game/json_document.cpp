@@ -199,9 +199,14 @@ JsonSyntaxError firstJsonSyntaxError(std::string_view text) {
 }
 
 std::optional<JsonShapeProblem> jsonShapeProblem(std::string_view text, std::size_t maxNesting,
-                                                 std::size_t maxContainers) {
-  std::size_t depth = 0, containers = 0;
+                                                 std::size_t maxValues) {
+  std::size_t depth = 0, values = 0;
   bool inString = false;
+  auto tooMany = [&](std::size_t at) -> std::optional<JsonShapeProblem> {
+    if (++values <= maxValues) return std::nullopt;
+    return JsonShapeProblem{at, "more than " + std::to_string(maxValues) +
+                                    " values (arrays, objects and commas) in the file, the limit"};
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (inString) {
@@ -217,10 +222,9 @@ std::optional<JsonShapeProblem> jsonShapeProblem(std::string_view text, std::siz
         return JsonShapeProblem{i, "arrays and objects nest more than " +
                                        std::to_string(maxNesting) + " deep here, the limit"};
       }
-      if (++containers > maxContainers) {
-        return JsonShapeProblem{i, "more than " + std::to_string(maxContainers) +
-                                       " arrays and objects in the file, the limit"};
-      }
+      if (auto problem = tooMany(i)) return problem;
+    } else if (c == ',') {
+      if (auto problem = tooMany(i)) return problem;
     } else if ((c == ']' || c == '}') && depth > 0) {
       --depth;
     }

@@ -33,22 +33,23 @@ struct JsonSyntaxError {
 // their limit about 25), and a reader checks it before building a tree, so deep nesting cannot
 // cost more than linear time.
 inline constexpr std::size_t kMaxJsonNesting = 64;
-// And there may be at most this many arrays and objects in one file: each costs about a hundred
-// bytes once read, so 16 MiB of "[[[]]]" would take a gigabyte; a level needs some tens of
-// thousands, an hour's replay under a million.
-inline constexpr std::size_t kMaxJsonContainers = 2'000'000;
+// And there may be at most this many values in one file, counted as its arrays, objects and
+// commas: each value costs 30 to 130 bytes once read (16 MiB of "[[[]]]" took a gigabyte, a
+// 64 MiB glTF of numbers 2.2 GB), while a level needs some hundred thousand, an hour's replay
+// about a million and a large glTF scene's JSON a few hundred thousand.
+inline constexpr std::size_t kMaxJsonValues = 4'000'000;
 
 // Where a JSON text goes past one of the limits above, and what it says.
 struct JsonShapeProblem {
-  std::size_t offset = 0;  // the '[' or '{' too deep, or the one too many
+  std::size_t offset = 0;  // the '[' or '{' too deep, or the '[', '{' or ',' one too many
   std::string message;     // "arrays and objects nest more than 64 deep here, the limit"
 };
 
-// The first place `text` goes past `maxNesting` or `maxContainers`, if it does. One pass,
+// The first place `text` goes past `maxNesting` or `maxValues`, if it does. One pass,
 // skipping strings; `text` need not be valid JSON.
 std::optional<JsonShapeProblem> jsonShapeProblem(std::string_view text,
                                                  std::size_t maxNesting = kMaxJsonNesting,
-                                                 std::size_t maxContainers = kMaxJsonContainers);
+                                                 std::size_t maxValues = kMaxJsonValues);
 
 // `text` parsed into an ordered_json (members in file order), in time linear in its size
 // (nlohmann's own parse looks each key up in the object's members so far, quadratic in their

@@ -32,8 +32,8 @@ std::string nestedArrays(std::size_t depth) {
 const std::string kTooDeepMessage = "arrays and objects nest more than 64 deep here, the limit";
 
 std::optional<std::size_t> offsetOfProblem(const std::string& text, std::size_t maxNesting = 64,
-                                           std::size_t maxContainers = 2'000'000) {
-  const auto problem = game::jsonShapeProblem(text, maxNesting, maxContainers);
+                                           std::size_t maxValues = 4'000'000) {
+  const auto problem = game::jsonShapeProblem(text, maxNesting, maxValues);
   return problem ? std::optional<std::size_t>(problem->offset) : std::nullopt;
 }
 
@@ -45,18 +45,22 @@ TEST(JsonNesting, the_first_bracket_past_the_limit_is_found_outside_strings) {
   EXPECT_EQ(offsetOfProblem("{\"a\": " + nestedArrays(200) + "}", 64), 69u);
 }
 
-// 16 MiB of "[]" would be 8 million arrays, about a gigabyte once read: past 2 000 000 arrays
-// and objects a file is refused at the one too many.
-TEST(JsonNesting, arrays_and_objects_past_the_count_limit_are_refused) {
-  std::string many = "[";
-  for (int i = 0; i < 2'000'001; ++i) many += i ? ",[]" : "[]";
+// 16 MiB of "0," would be 8 million numbers, several hundred megabytes once read (a glTF's
+// more): past 4 000 000 values (arrays, objects and commas) a file is refused at the one too
+// many.
+TEST(JsonNesting, values_past_the_count_limit_are_refused) {
+  std::string many = "[0";
+  for (int i = 1; i < 4'000'001; ++i) many += ",0";
   many += "]";
   const auto problem = game::jsonShapeProblem(many);
   ASSERT_TRUE(problem.has_value());
-  EXPECT_EQ(problem->offset, 3u * 1'999'999u + 1u);  // the 2 000 000th "[]" inside
-  EXPECT_EQ(problem->message, "more than 2000000 arrays and objects in the file, the limit");
-  EXPECT_EQ(game::jsonShapeProblem("[" + std::string("[],[],[]") + "]", 64, 4), std::nullopt);
-  EXPECT_EQ(offsetOfProblem("[{},[],{\"a\":[]}]", 64, 4), 12u);
+  // The root array is value 1, the k-th comma value k + 1, at offset 2k.
+  EXPECT_EQ(problem->offset, 2u * 4'000'000u);
+  EXPECT_EQ(problem->message,
+            "more than 4000000 values (arrays, objects and commas) in the file, the limit");
+  EXPECT_EQ(offsetOfProblem("[1,2,3]", 64, 3), std::nullopt);
+  EXPECT_EQ(offsetOfProblem("[{},[],{\"a\":[]}]", 64, 5), 7u);      // [ { , [ , then this {
+  EXPECT_EQ(offsetOfProblem("[\",,,,\",1]", 64, 2), std::nullopt);  // commas in strings
 }
 
 TEST(JsonNesting, a_level_names_the_place_where_nesting_passes_the_limit) {
