@@ -44,6 +44,7 @@ play::PlayOptions playOptions(const Options& options) {
   if (options.sizeGiven) playing.pictureSize = std::pair(options.width, options.height);
   playing.quitAfterTicks = options.quitAfterTicks;
   playing.hudOff = options.hudOff;
+  playing.upscale = options.upscale;
   playing.record = options.record;
   playing.capture = options.capture;
   playing.levelLoading = levelLoadOptions();

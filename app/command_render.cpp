@@ -51,7 +51,7 @@ RenderResult renderToPng(const render::Context& context, render::ShaderCompiler&
     times.push_back(result.last.milliseconds);
     if (showProgress) printProgress(i + 1, frames);
   }
-  render::writePng(out, {renderer.width(), renderer.height(), renderer.pixels()});
+  render::writePng(out, {renderer.outputWidth(), renderer.outputHeight(), renderer.pixels()});
   result.milliseconds =
       frames > 1 ? median(std::vector<double>(times.begin() + 1, times.end())) : times.front();
   return result;

@@ -86,6 +86,15 @@ const std::vector<OptionSpec> kOptions{
      "light reaches surfaces and sensors only directly, not via mirrors (to\nmeasure what routing "
      "costs; probes then differ from the game's)",
      kPicture},
+    {"--upscale",
+     "WxH",
+     "upscale temporally to this output size: jittered rays accumulated into\na history at WxH "
+     "(the --size again gives plain temporal anti-aliasing)",
+     {"render", "bench"}},
+    {"--no-upscale",
+     "",
+     "scale the picture to the window with a bilinear blit instead of temporal\nupscaling",
+     {"play"}},
     {"--device", "SEL", "device index or part of its name (see `sightline devices`)", kRendering},
     {"--validate", "", "enable the Vulkan validation layer (with synchronization checks)",
      join(kRendering, {"devices"})},
@@ -277,6 +286,12 @@ Options parseOptions(int argc, char** argv) {
       options.subgroupCounters = false;
     } else if (argument == "--no-light-routes") {
       options.lightRoutes = false;
+    } else if (argument == "--upscale") {
+      uint32_t width = 0, height = 0;
+      parseSize("--upscale", value(), &width, &height);
+      options.upscaleSize = {width, height};
+    } else if (argument == "--no-upscale") {
+      options.upscale = false;
     } else if (argument == "--device") {
       options.device = value();
     } else if (argument == "--validate") {

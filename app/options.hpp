@@ -35,6 +35,9 @@ struct Options {
   uint32_t rowGroups = 0;        // 0: the renderer's choice for the device
   bool subgroupCounters = true;  // --no-subgroup-counters: one atomic per pixel
   bool lightRoutes = true;       // --no-light-routes: direct light only
+  // --upscale WxH: temporal upscaling to this output size (render, bench, bench-quality)
+  std::optional<std::pair<uint32_t, uint32_t>> upscaleSize;
+  bool upscale = true;  // play --no-upscale: the window's blit scales the picture instead
   std::string device;
   bool validate = false;
   bool watch = false;

@@ -26,6 +26,10 @@ render::RendererOptions rendererOptionsFor(const Options& options, uint32_t widt
   rendererOptions.rowGroups = options.rowGroups;
   rendererOptions.subgroupCounters = options.subgroupCounters;
   rendererOptions.lightRoutes = options.lightRoutes;
+  if (options.upscaleSize) {
+    rendererOptions.outputWidth = options.upscaleSize->first;
+    rendererOptions.outputHeight = options.upscaleSize->second;
+  }
   return rendererOptions;
 }
 

@@ -7,6 +7,7 @@
 #include <GLFW/glfw3.h>
 
 #include "game/level_loader.hpp"
+#include "play/frame_parts.hpp"
 #include "play/hud.hpp"
 #include "play/recording.hpp"
 #include "render/context.hpp"
@@ -51,7 +52,9 @@ int Game::run(const fs::path& firstLevel) {
   double titleAt = started;
   uint32_t framesSinceTitle = 0;
   std::vector<double> frameMilliseconds;  // every frame's, for the percentiles at the end
+  FramePartTimes parts;
   while (!glfwWindowShouldClose(window_)) {
+    parts.start(FramePart::Input);
     if (paused_)
       glfwWaitEventsTimeout(0.05);  // nothing moves: no need to spin
     else
@@ -64,12 +67,15 @@ int Game::run(const fs::path& firstLevel) {
     bool quitting = false;
     if (!paused_) {
       gatherMouseLook(window_, look_, settings_);
+      parts.start(FramePart::Ticks);
       runTicks(elapsed);
       quitting = options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks;
       if (!quitting && advanceAfterOutcome(played_, now, levelSetup())) updateTitle(0.0);
     }
     if (quitting && options_.capture) presenter_.captureNextPresent();
-    played_.simulation->renderPicture();
+    parts.start(FramePart::Picture);
+    played_.simulation->renderPicture(false);
+    parts.start(FramePart::Interface);
     const std::vector<render::HudRect> hud =
         options_.hudOff ? std::vector<render::HudRect>{} : hudRects(*played_.simulation);
     ui_->beginFrame();
@@ -80,7 +86,9 @@ int Game::run(const fs::path& firstLevel) {
     }
     if (paused_) drawPauseMenu(menu_, played_, levels_, settings_, keyCodes_, presenter_);
     const render::OverlayDraw overlay = ui_->endFrame();
+    parts.start(FramePart::Present);
     if (presenter_.present(played_.simulation->renderer(), hud, overlay)) ++framesShown_;
+    parts.endFrame();
     reportSwapchainChange(presenter_, shownSwapchain_);
     if (screenshotRequested_ && !quitting && saveScreenshot(presenter_))
       screenshotRequested_ = false;
@@ -93,6 +101,8 @@ int Game::run(const fs::path& firstLevel) {
                   static_cast<unsigned long long>(framesShown_),
                   double(framesShown_) / std::max(now - started, 1e-3),
                   render::frameTimePercentiles(frameMilliseconds).text().c_str());
+      std::printf("frame parts: %s\n",
+                  parts.mediansText(played_.simulation->probeFrames()).c_str());
       break;
     }
     if (menu_.quitRequested) glfwSetWindowShouldClose(window_, GLFW_TRUE);

@@ -24,17 +24,20 @@ constexpr uint32_t kMinRenderSide = 16;  // the smallest internal image side ren
 
 // --size wins; otherwise the window's size (in screen units, so a high-DPI screen does not
 // quadruple the work) times the render scale: 1280x720 at 0.25 gives 320x180.
+// With upscaling, the picture is upscaled temporally to the window's size.
 void chooseRenderSize(PlayedLevel& played, const LevelSetup& setup) {
-  if (setup.options.pictureSize) {
-    played.renderWidth = setup.options.pictureSize->first;
-    played.renderHeight = setup.options.pictureSize->second;
-    return;
-  }
   int width = 0, height = 0;
   glfwGetWindowSize(setup.window, &width, &height);
   if (width <= 0 || height <= 0) {  // minimised: the default window's shape
     width = kWindowWidth;
     height = kWindowHeight;
+  }
+  played.outputWidth = setup.options.upscale ? uint32_t(width) : 0;
+  played.outputHeight = setup.options.upscale ? uint32_t(height) : 0;
+  if (setup.options.pictureSize) {
+    played.renderWidth = setup.options.pictureSize->first;
+    played.renderHeight = setup.options.pictureSize->second;
+    return;
   }
   const float scale = setup.settings.renderScale;
   played.renderWidth = std::max(kMinRenderSide, uint32_t(std::lround(width * scale)));
@@ -74,6 +77,8 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   sim::SimulationOptions simulationOptions;
   simulationOptions.width = played.renderWidth;
   simulationOptions.height = played.renderHeight;
+  simulationOptions.outputWidth = played.outputWidth;
+  simulationOptions.outputHeight = played.outputHeight;
   simulationOptions.verticalFovDegrees = setup.settings.fieldOfViewDegrees;
   played.simulation = std::make_unique<sim::Simulation>(setup.context, setup.compiler,
                                                         *played.level, simulationOptions);

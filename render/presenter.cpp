@@ -521,9 +521,9 @@ void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, u
 
   VkImageBlit blit{};
   blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.srcOffsets[1] = {int32_t(renderer.width()), int32_t(renderer.height()), 1};
+  blit.srcOffsets[1] = {int32_t(renderer.outputWidth()), int32_t(renderer.outputHeight()), 1};
   blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  fitRectangle(renderer.width(), renderer.height(), extent_, &blit.dstOffsets[0],
+  fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_, &blit.dstOffsets[0],
                &blit.dstOffsets[1]);
   vkCmdBlitImage(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, filter_);

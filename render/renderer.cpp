@@ -176,6 +176,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     gpuInstances.push_back({glm::uvec4(range.firstIndex, range.vertexOffset, material, 0),
                             {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
     currentTransforms_.push_back(instance.objectToWorld);
+    historyTransforms_.push_back(instance.objectToWorld);
     instanceVisible_.push_back(true);
     triangleCount_ += range.indexCount / 3;
   }
@@ -238,7 +239,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "probe setup");
   const gpu::ProbeSetup noProbes{};
   probeSetup_.write(&noProbes, sizeof noProbes);
-  readback_ = Buffer(context, VkDeviceSize(options.width) * options.height * 4,
+  const bool upscaled = options.outputWidth > 0 && options.outputHeight > 0;
+  readback_ = Buffer(context,
+                     VkDeviceSize(upscaled ? options.outputWidth : options.width) *
+                         (upscaled ? options.outputHeight : options.height) * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
 
   std::vector<TriangleGeometry> geometries;
@@ -287,6 +291,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
+  if (upscaled) {
+    upscaler_ = std::make_unique<TemporalUpscaler>(context, options.width, options.height,
+                                                   options.outputWidth, options.outputHeight);
+  }
   routeLight_ = features.lightRoutes;
   routeMirrors_ = features.maxMirrorBounces;
   mirrorFaces_.resize(scene.instances.size());
@@ -365,11 +373,14 @@ void Renderer::createDescriptors() {
   layoutBindings.push_back({BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                             textureCount, kRayStages, nullptr});
   poolSizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount * kSets});
-  if (denoiser_) {
-    for (const auto& [binding, view] : denoiser_->bindings(0)) {
-      layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kAllStages, nullptr});
-      poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSets});
-    }
+  std::vector<std::pair<uint32_t, VkImageView>> passImages;
+  if (denoiser_) passImages = denoiser_->bindings(0);
+  if (upscaler_) {
+    for (const auto& entry : upscaler_->bindings(0)) passImages.push_back(entry);
+  }
+  for (const auto& [binding, view] : passImages) {
+    layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kAllStages, nullptr});
+    poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSets});
   }
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
@@ -416,6 +427,9 @@ void Renderer::createDescriptors() {
         {BINDING_HDR_IMAGE, hdrImage_->view()}, {BINDING_OUTPUT_IMAGE, outputImage_->view()}};
     if (denoiser_) {
       for (const auto& entry : denoiser_->bindings(parity)) storageImages.push_back(entry);
+    }
+    if (upscaler_) {
+      for (const auto& entry : upscaler_->bindings(parity)) storageImages.push_back(entry);
     }
     // Infos are sized up front: writes point into them.
     std::vector<VkDescriptorImageInfo> imageInfos;
@@ -466,6 +480,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   pipelineDescription_ = describePipeline(features);
   const bool subgroupCounters = options_.subgroupCounters && context_.raygenSubgroupArithmetic();
   pipelineDescription_.defines.push_back({"SUBGROUP_COUNTERS", subgroupCounters ? "1" : "0"});
+  pipelineDescription_.defines.push_back({"TEMPORAL_UPSCALE", upscaler_ ? "1" : "0"});
   const ShaderDefines& defines = pipelineDescription_.defines;
   auto load = [&](const std::string& file) {
     return ShaderCode{file, compiler.compile(file, defines).spirv};
@@ -493,6 +508,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
       compiler.compile("tonemap.comp", {{"SOFT_SHADOWS", features.softShadows ? "1" : "0"}}).spirv,
       "tonemap");
   if (denoiser_) denoiser_->createPipelines(compiler, pipelineLayout_);
+  if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_);
 }
 
 void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
@@ -501,24 +517,29 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
   pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
 }
 
-// Each instance's previous-from-current transform: what moved since the last frame, so the
-// denoiser reprojects moving objects; identity again once they stop.
-void Renderer::writeInstanceMotion() {
-  if (pendingTransforms_.empty() && !instancesMoved_) return;
+// New transforms go to the TLAS with every frame. A full frame also gets each instance's
+// previous-from-current transform: what moved since the last full frame, so the denoiser
+// reprojects moving objects; identity again once they stop.
+void Renderer::writeInstanceMotion(bool fullFrame) {
+  if (!pendingTransforms_.empty()) {
+    currentTransforms_ = pendingTransforms_;
+    pendingTransforms_.clear();
+    tlasStale_ = true;
+    movedSinceHistory_ = true;
+  }
+  if (!fullFrame || (!movedSinceHistory_ && !instancesMoved_)) return;
   for (size_t i = 0; i < currentTransforms_.size(); ++i) {
-    glm::mat4 previousFromCurrent(1.0f);
-    if (!pendingTransforms_.empty()) {
-      previousFromCurrent =
-          motionInRenderSpace(currentTransforms_[i], pendingTransforms_[i], *renderOrigin_);
-      currentTransforms_[i] = pendingTransforms_[i];
-    }
+    const glm::mat4 previousFromCurrent =
+        movedSinceHistory_
+            ? motionInRenderSpace(historyTransforms_[i], currentTransforms_[i], *renderOrigin_)
+            : glm::mat4(1.0f);
     glm::vec4 rows[3];
     for (int row = 0; row < 3; ++row) rows[row] = glm::row(previousFromCurrent, row);
     instances_.write(rows, sizeof rows, i * sizeof(gpu::GpuInstance) + sizeof(glm::uvec4));
   }
-  instancesMoved_ = !pendingTransforms_.empty();
-  if (instancesMoved_) tlasStale_ = true;
-  pendingTransforms_.clear();
+  instancesMoved_ = movedSinceHistory_;
+  movedSinceHistory_ = false;
+  historyTransforms_ = currentTransforms_;
 }
 
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
@@ -569,6 +590,16 @@ void Renderer::setProbes(const scene::ProbeRequest& request) {
                    glm::packUnorm4x8(glm::vec4(chroma, 0.0f)));
     counts.exposurePoints.push_back(uint32_t(exposure.points.size()));
   }
+  focusBox_.reset();
+  for (size_t i = 0; i < request.focus.size(); ++i) {
+    const scene::PixelBox box =
+        scene::focusPixelBox(request.focus[i].region, options_.width, options_.height);
+    focusBox_ =
+        focusBox_
+            ? scene::PixelBox{std::min(focusBox_->x0, box.x0), std::min(focusBox_->y0, box.y0),
+                              std::max(focusBox_->x1, box.x1), std::max(focusBox_->y1, box.y1)}
+            : box;
+  }
   counts.focusPixels.assign(request.focus.size(), 0);
   counts.exposureFixed.assign(request.exposure.size(), 0);
   probeSetup_.write(&setup, sizeof setup);
@@ -597,7 +628,6 @@ void Renderer::writeProbePoints() {
 // Centres render space on `origin` (the frame's camera): lights, probe points and, with the
 // next TLAS update, instances move to it. Nothing changes while the camera stands still.
 void Renderer::moveRenderOrigin(const glm::dvec3& origin) {
-  previousOrigin_ = renderOrigin_.value_or(origin);
   if (renderOrigin_ == origin) return;
   renderOrigin_ = origin;
   tlasStale_ = true;
@@ -683,7 +713,7 @@ void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
-void Renderer::writeFrameUniforms(const scene::FrameDesc& frame) {
+void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly) {
   const CameraBasis camera =
       cameraBasis(frame.camera, float(options_.width) / float(options_.height));
 
@@ -705,23 +735,35 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame) {
   constexpr double kCutDistance = 1.0;
   constexpr float kCutCosine = 0.7f;
   const glm::dvec3 origin = renderOrigin_.value_or(glm::dvec3(0.0));
-  const bool cut = previousUniforms_ && (glm::distance(previousOrigin_, origin) > kCutDistance ||
+  const glm::dvec3 previousOrigin = historyOrigin_.value_or(origin);
+  const bool cut = previousUniforms_ && (glm::distance(previousOrigin, origin) > kCutDistance ||
                                          glm::dot(glm::vec3(previousUniforms_->cameraForward),
                                                   camera.forward) < kCutCosine);
   const bool reset = frame.resetHistory || !previousUniforms_ || cut;
   const gpu::FrameUniforms& previous = previousUniforms_ ? *previousUniforms_ : uniforms;
   // The previous camera in this frame's render space.
-  uniforms.previousCameraPosition = glm::vec4(glm::vec3(previousOrigin_ - origin), 1.0f);
+  uniforms.previousCameraPosition = glm::vec4(glm::vec3(previousOrigin - origin), 1.0f);
   uniforms.previousCameraRight = previous.cameraRight;
   uniforms.previousCameraUp = previous.cameraUp;
   uniforms.previousCameraForward = previous.cameraForward;
   uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
                                 denoiserIterations(frame), 0u);
+  if (upscaler_) {
+    const glm::vec2 jitter = probeOnly ? glm::vec2(0.0f) : TemporalUpscaler::jitter(jitterIndex_++);
+    uniforms.upscale =
+        glm::vec4(jitter, float(upscaler_->outputWidth()), float(upscaler_->outputHeight()));
+  }
+  if (probeOnly) {
+    if (focusBox_) uniforms.probeLaunch = glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u);
+    uniforms.probeLaunch.z = 1u;
+  }
   frameUniforms_.write(&uniforms, sizeof uniforms);
+  if (probeOnly) return;  // the next full frame reprojects from the last full one
   previousUniforms_ = uniforms;
+  historyOrigin_ = origin;
 }
 
-void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
+void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOnly) {
   auto stamp = [&](uint32_t query) {
     if (timestamps_)
       vkCmdWriteTimestamp(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, timestamps_, query);
@@ -760,7 +802,11 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
                     rayTracingPipeline_->handle());
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
                           &descriptorSets_[parity_], 0, nullptr);
-  rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
+  if (!probeOnly)
+    rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
+  else if (focusBox_)
+    rayTracingPipeline_->recordTrace(commands, focusBox_->x1 - focusBox_->x0,
+                                     focusBox_->y1 - focusBox_->y0);
   if (!probeRequest_.exposure.empty()) {
     // Both launches add into the probe results.
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
@@ -773,31 +819,39 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
   stamp(1);
-  if (denoiser_) {
+  if (denoiser_ && !probeOnly) {
     denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
   }
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
-  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
-                          &descriptorSets_[parity_], 0, nullptr);
   stamp(2);
-  vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
+  if (!probeOnly) {
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
+                            &descriptorSets_[parity_], 0, nullptr);
+    vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
+    if (upscaler_) {
+      memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+      upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_]);
+    }
+  }
   stamp(3);
-  if (readback) {
-    imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_GENERAL,
+  const VkImage picture = outputImage();
+  if (readback && !probeOnly) {
+    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_GENERAL,
                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                        VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                        VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {options_.width, options_.height, 1};
-    vkCmdCopyImageToBuffer(commands, outputImage_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    region.imageExtent = {outputWidth(), outputHeight(), 1};
+    vkCmdCopyImageToBuffer(commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            readback_.handle(), 1, &region);
     memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-    // Back to GENERAL for the next frame's tonemap, after the copy has read it.
-    imageLayoutBarrier(commands, outputImage_->image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    // Back to GENERAL for the next frame's passes, after the copy has read it.
+    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                        VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
   }
@@ -812,7 +866,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback) {
 }
 
 VkImage Renderer::outputImage() const {
-  return outputImage_->image();
+  return upscaler_ ? upscaler_->display().image() : outputImage_->image();
 }
 
 uint32_t Renderer::denoiserIterations(const scene::FrameDesc& frame) const {
@@ -841,17 +895,25 @@ void Renderer::writeDenoiserHistoryTexel(uint32_t x, uint32_t y, const glm::vec4
 }
 
 FrameStats Renderer::renderFrame(const scene::FrameDesc& frame, bool readback) {
-  lastIterations_ = denoiserIterations(frame);
+  return submitFrame(frame, readback, false);
+}
+
+FrameStats Renderer::renderProbeFrame(const scene::FrameDesc& frame) {
+  return submitFrame(frame, false, true);
+}
+
+FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, bool probeOnly) {
+  if (!probeOnly) lastIterations_ = denoiserIterations(frame);
   moveRenderOrigin(glm::dvec3(frame.camera.position));
-  writeInstanceMotion();
+  writeInstanceMotion(!probeOnly);
   writeLightRoutes();
-  writeFrameUniforms(frame);
+  writeFrameUniforms(frame, probeOnly);
 
   vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordFrame(commands_, readback);
+  recordFrame(commands_, readback, probeOnly);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
 
   const auto start = std::chrono::steady_clock::now();
@@ -891,6 +953,7 @@ FrameStats Renderer::renderFrame(const scene::FrameDesc& frame, bool readback) {
     probeCounts_.exposureFixed[i] = probeResults.exposure[i];
   stats.surfaceRays = counters.surfaceRays;
   stats.secondaryRays = counters.secondaryRays;
+  if (probeOnly) return stats;
   if (readback) {
     pixels_.resize(readback_.size());
     readback_.read(pixels_.data(), pixels_.size());

@@ -16,6 +16,7 @@
 #include "render/gpu_types.hpp"
 #include "render/light_routes.hpp"
 #include "render/pipeline_variant.hpp"
+#include "render/temporal_upscaler.hpp"
 #include "scene/flat_faces.hpp"
 #include "scene/probes.hpp"
 #include "scene/scene_desc.hpp"
@@ -46,13 +47,18 @@ struct RendererOptions {
   // Route light by flat mirrors onto surfaces and sensors where the scene can (false: direct
   // light only, as the Embree reference traces it).
   bool lightRoutes = true;
+  // Temporal upscaling to this size (0: none, the picture is the render size): jittered camera
+  // rays accumulated into a history at the output size, which outputImage() then holds. The
+  // render size again gives plain temporal anti-aliasing. Probe frames are never jittered.
+  uint32_t outputWidth = 0;
+  uint32_t outputHeight = 0;
 };
 
 // GPU time of each pass from timestamp queries (0 where the device has no timestamps).
 struct PassTimes {
   double traceMs = 0.0;    // TLAS update and ray tracing
   double denoiseMs = 0.0;  // temporal and a-trous passes (0 without soft shadows)
-  double tonemapMs = 0.0;  // composite, tonemap, sRGB encode
+  double tonemapMs = 0.0;  // composite, tonemap, sRGB encode, temporal upscale
   double readbackMs = 0.0;
   double totalMs() const { return traceMs + denoiseMs + tonemapMs + readbackMs; }
 };
@@ -75,6 +81,10 @@ class Renderer {
 
   // Renders one frame and waits for it. With `readback`, pixels() holds the result.
   FrameStats renderFrame(const scene::FrameDesc& frame, bool readback = true);
+  // Renders only what the probes read and waits for it: the focus regions' pixels (what each
+  // path reaches, unshaded) and the exposure probes, with the same counts a full frame gives.
+  // No image changes, and the denoiser's history and motion stay those of the last full frame.
+  FrameStats renderProbeFrame(const scene::FrameDesc& frame);
 
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
@@ -97,9 +107,11 @@ class Renderer {
   // The light's colour times `tint` (white: as the level made it).
   void setLightTint(uint32_t light, const glm::vec3& tint);
 
-  // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback.
+  // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback, at the
+  // output size.
   const std::vector<uint8_t>& pixels() const { return pixels_; }
-  // The last frame's display image (R8G8B8A8_UNORM holding sRGB-encoded bytes, usable as a
+  // The last frame's display image at the output size (R8G8B8A8_UNORM holding sRGB-encoded
+  // bytes, usable as a
   // transfer source). After renderFrame it is in VK_IMAGE_LAYOUT_GENERAL; a user that changes
   // the layout (a presenter's blit) must put it back to GENERAL before the next frame.
   VkImage outputImage() const;
@@ -121,8 +133,11 @@ class Renderer {
   // What each pixel's path reached in the last frame (rows top to bottom).
   std::vector<gpu::PixelPath> pixelPaths() const;
   const PipelineDescription& pipelineDescription() const { return pipelineDescription_; }
-  uint32_t width() const { return options_.width; }
+  uint32_t width() const { return options_.width; }  // the render size: rays, probes
   uint32_t height() const { return options_.height; }
+  // The picture's size: the output size with temporal upscaling, else the render size.
+  uint32_t outputWidth() const { return upscaler_ ? upscaler_->outputWidth() : width(); }
+  uint32_t outputHeight() const { return upscaler_ ? upscaler_->outputHeight() : height(); }
   size_t triangleCount() const { return triangleCount_; }
 
  private:
@@ -131,12 +146,13 @@ class Renderer {
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);
   void moveRenderOrigin(const glm::dvec3& origin);
-  void writeFrameUniforms(const scene::FrameDesc& frame);
-  void writeInstanceMotion();
+  void writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly);
+  void writeInstanceMotion(bool fullFrame);
   void writeProbePoints();
   void writeLightRoutes();
   uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
-  void recordFrame(VkCommandBuffer commands, bool readback);
+  void recordFrame(VkCommandBuffer commands, bool readback, bool probeOnly);
+  FrameStats submitFrame(const scene::FrameDesc& frame, bool readback, bool probeOnly);
 
   const Context& context_;
   RendererOptions options_;
@@ -163,6 +179,7 @@ class Renderer {
   std::vector<bool> instanceVisible_;
   std::vector<gpu::GpuLightRoute> routes_;
   scene::ProbeRequest probeRequest_;
+  std::optional<scene::PixelBox> focusBox_;  // all focus regions' pixels, if there are any
   scene::ProbeCounts probeCounts_;
   PipelineDescription pipelineDescription_;
   Buffer readback_;
@@ -184,13 +201,17 @@ class Renderer {
   uint32_t parity_ = 0;
   uint32_t lastIterations_ = 0;
   std::unique_ptr<Denoiser> denoiser_;
+  std::unique_ptr<TemporalUpscaler> upscaler_;
+  uint32_t jitterIndex_ = 0;  // full frames rendered with temporal upscaling
   std::optional<gpu::FrameUniforms> previousUniforms_;  // for reprojection; none: reset
   // The world position render space is centred on: the camera of the last frame (none before
-  // the first), and that of the frame before it (for reprojection and cut detection).
+  // the first), and that of the last full frame (for reprojection and cut detection).
   std::optional<glm::dvec3> renderOrigin_;
-  glm::dvec3 previousOrigin_{0.0};
+  std::optional<glm::dvec3> historyOrigin_;
   std::vector<glm::mat4> currentTransforms_;  // world space
-  bool instancesMoved_ = false;
+  std::vector<glm::mat4> historyTransforms_;  // world space, at the last full frame
+  bool movedSinceHistory_ = false;            // transforms arrived since the last full frame
+  bool instancesMoved_ = false;               // the last full frame's motion was not identity
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

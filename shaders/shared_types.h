@@ -45,6 +45,17 @@ using uint = uint32_t;
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 #define BINDING_LIGHT_ROUTES 26  // lights seen via mirrors (levels with flat mirrors and lights)
 #define BINDING_TRIANGLE_MATERIALS 27  // per-triangle materials of meshes with several
+// Temporal upscaling (a renderer with an output size): ray-gen's motion at the render size, and
+// the history and picture at the output size.
+#define BINDING_UPSCALE_MOTION 28  // rgba32f: previous pixel xy, distance z, first instance + 1 w
+#define BINDING_UPSCALE_HISTORY 29       // rgba16f: accumulated display rgb, its weight a (prev.)
+#define BINDING_UPSCALE_HISTORY_NEXT 30  // this frame's
+#define BINDING_UPSCALE_INSTANCE 31      // r32ui: instance + 1 the history shows (prev.; 0: none)
+#define BINDING_UPSCALE_INSTANCE_NEXT 32  // this frame's
+#define BINDING_DISPLAY_IMAGE 33          // rgba8: the upscaled picture, sRGB-encoded
+// The most frames the upscaler's history averages (in expected sample weight): a static view
+// has converged after about this many frames.
+#define UPSCALE_MAX_HISTORY_FRAMES 32.0
 
 #define LIGHT_POINT 0u
 #define LIGHT_DIRECTIONAL 1u
@@ -97,6 +108,12 @@ struct FrameUniforms {
   vec4 previousCameraUp;
   vec4 previousCameraForward;
   uvec4 denoise;  // x: reset history, y: reference accumulation, z: filter iterations
+  // A probe-only frame (z: 1) traces just the focus regions' box, whose top-left pixel is xy,
+  // and finds what each path reaches without shading it or writing any image.
+  uvec4 probeLaunch;
+  // Temporal upscaling: xy the camera rays' offset from the pixel centres (pixels, in
+  // [-0.5, 0.5); 0 without upscaling and in probe frames), zw the output size.
+  vec4 upscale;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials

@@ -18,6 +18,8 @@ render::RendererOptions rendererOptions(const SimulationOptions& options) {
   render::RendererOptions result;
   result.width = options.width;
   result.height = options.height;
+  result.outputWidth = options.outputWidth;
+  result.outputHeight = options.outputHeight;
   return result;
 }
 
@@ -171,7 +173,7 @@ game::ProbeReadings Simulation::renderProbeFrame() {
   scene::FrameDesc frame;
   frame.camera = world_.camera();
   frame.frameIndex = frameIndex_++;
-  renderer_->renderFrame(frame, false);
+  renderer_->renderProbeFrame(frame);
   const scene::ProbeCounts& counts = renderer_->probeCounts();
   game::ProbeReadings readings;
   readings.tick = world_.tick();
@@ -217,13 +219,13 @@ void Simulation::step(const game::TickInput& input) {
     rules_.decide(*decided, logic_.outcomeTick(), logic_.reason());
 }
 
-const std::vector<uint8_t>& Simulation::renderPicture() {
+const std::vector<uint8_t>& Simulation::renderPicture(bool readback) {
   syncRenderer();
   scene::FrameDesc frame;
   frame.camera = world_.camera();
   // Sample sequences of their own, so taking a picture changes no probe frame's samples.
   frame.frameIndex = kPictureFrames + pictureFrames_++;
-  renderer_->renderFrame(frame, true);
+  renderer_->renderFrame(frame, readback);
   return renderer_->pixels();
 }
 

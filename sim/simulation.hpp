@@ -35,6 +35,9 @@ struct SimulationOptions {
   uint32_t probeEveryTicks = 4;             // k
   uint32_t probeLatency = 2;                // L, in probe frames
   std::optional<float> verticalFovDegrees;  // the level camera's when unset
+  // Pictures upscaled temporally to this size (0: none); probes keep width x height.
+  uint32_t outputWidth = 0;
+  uint32_t outputHeight = 0;
 };
 
 class Simulation {
@@ -57,9 +60,10 @@ class Simulation {
   // Probe frames rendered so far.
   uint64_t probeFrames() const { return probeFrames_; }
 
-  // Renders the current state as a picture (denoised, with readback), outside the probe
-  // cadence; probes are unaffected. Returns RGBA8 rows top to bottom.
-  const std::vector<uint8_t>& renderPicture();
+  // Renders the current state as a picture (denoised), outside the probe cadence; probes are
+  // unaffected. Returns RGBA8 rows top to bottom, read back unless `readback` is false (a
+  // window presents the renderer's image instead).
+  const std::vector<uint8_t>& renderPicture(bool readback = true);
   render::Renderer& renderer() { return *renderer_; }
   const render::Renderer& renderer() const { return *renderer_; }
 

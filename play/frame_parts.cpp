@@ -1,0 +1,52 @@
+#include "play/frame_parts.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace play {
+namespace {
+
+constexpr std::array<const char*, kFrameParts> kPartNames = {"input", "ticks", "picture",
+                                                             "interface", "present"};
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
+  std::nth_element(values.begin(), middle, values.end());
+  return *middle;
+}
+
+}  // namespace
+
+void FramePartTimes::start(FramePart part) {
+  const Clock::time_point now = Clock::now();
+  if (running_ >= 0)
+    current_[std::size_t(running_)] +=
+        std::chrono::duration<double, std::milli>(now - startedAt_).count();
+  running_ = int(part);
+  startedAt_ = now;
+}
+
+void FramePartTimes::endFrame() {
+  start(FramePart::Input);  // closes the running part
+  running_ = -1;
+  for (std::size_t part = 0; part < kFrameParts; ++part) {
+    frames_[part].push_back(current_[part]);
+    current_[part] = 0.0;
+  }
+}
+
+std::string FramePartTimes::mediansText(unsigned long long probeFrames) const {
+  std::string text;
+  char item[64];
+  for (std::size_t part = 0; part < kFrameParts; ++part) {
+    std::snprintf(item, sizeof item, "%s%s %.2f", part ? "  " : "", kPartNames[part],
+                  median(frames_[part]));
+    text += item;
+  }
+  std::snprintf(item, sizeof item, " ms (medians of %zu frames; %llu probe frames)",
+                frames_[0].size(), probeFrames);
+  return text + item;
+}
+
+}  // namespace play

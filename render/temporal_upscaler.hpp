@@ -1,0 +1,51 @@
+#pragma once
+// Temporal upscaling (TAAU): the camera rays are jittered by a sub-pixel sequence, and a compute
+// pass accumulates each frame's picture into a history kept at the output size, which becomes
+// the presented image (shaders/temporal_upscale.comp).
+#include <array>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+#include <glm/glm.hpp>
+
+#include "render/storage_image.hpp"
+
+namespace render {
+
+class Context;
+class ShaderCompiler;
+
+class TemporalUpscaler {
+ public:
+  TemporalUpscaler(const Context& context, uint32_t renderWidth, uint32_t renderHeight,
+                   uint32_t outputWidth, uint32_t outputHeight);
+  ~TemporalUpscaler();
+  TemporalUpscaler(const TemporalUpscaler&) = delete;
+  TemporalUpscaler& operator=(const TemporalUpscaler&) = delete;
+
+  // The camera rays' offset from the pixel centres in frame `index` (pixels, in [-0.5, 0.5)):
+  // the Halton (2, 3) sequence, repeating every 16 frames.
+  static glm::vec2 jitter(uint32_t index);
+
+  // Storage images by binding for frame parity 0 or 1 ("previous" bindings get the other's).
+  std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
+  void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
+  // The resolve; the caller has ordered the tonemap's writes before it.
+  void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set) const;
+
+  // The upscaled picture (R8G8B8A8_UNORM holding sRGB-encoded bytes), kept in GENERAL.
+  const StorageImage& display() const { return *display_; }
+  uint32_t outputWidth() const { return outputWidth_; }
+  uint32_t outputHeight() const { return outputHeight_; }
+
+ private:
+  const Context& context_;
+  uint32_t outputWidth_, outputHeight_;
+  std::unique_ptr<StorageImage> motion_, display_;
+  std::array<std::unique_ptr<StorageImage>, 2> history_, instance_;
+  VkPipeline resolve_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render

@@ -1,0 +1,123 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include "shared_types.h"
+
+// Temporal upscaling (TAAU): this frame's jittered picture at the render size is accumulated
+// into a history at the output size, which follows the motion ray-gen wrote (camera and moving
+// instances), is clamped to the range of this frame's samples around it (no ghosts where the
+// view changed), and is dropped where a moving instance was seen before (no trail behind it).
+// Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
+  GpuInstance instances[];
+};
+// The tonemap's output at the render size.
+layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
+layout(set = 0, binding = BINDING_UPSCALE_MOTION, rgba32f) uniform readonly image2D motionImage;
+layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba16f) uniform readonly image2D historyImage;
+layout(set = 0, binding = BINDING_UPSCALE_HISTORY_NEXT, rgba16f) uniform writeonly image2D
+    historyNextImage;
+layout(set = 0, binding = BINDING_UPSCALE_INSTANCE, r32ui) uniform readonly uimage2D
+    historyInstanceImage;
+layout(set = 0, binding = BINDING_UPSCALE_INSTANCE_NEXT, r32ui) uniform writeonly uimage2D
+    historyInstanceNextImage;
+layout(set = 0, binding = BINDING_DISPLAY_IMAGE, rgba8) uniform writeonly image2D displayImage;
+
+// A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
+// smooth bump about a pixel wide, like the box filter of a supersampled reference.
+const float kSampleRadius = 1.0;
+// Accumulated weight worth one sample at the pixel centre: below it the picture blends towards
+// the bilinear upscale of this frame, so the first frames look like a plain upscale.
+const float kEnoughWeight = 1.0;
+
+float sampleWeight(vec2 offset) {
+  float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
+  return t * t;
+}
+
+bool instanceMoved(uint instancePlusOne) {
+  if (instancePlusOne == 0u) return false;
+  vec4 rows[3] = instances[instancePlusOne - 1u].previousFromCurrent;
+  return rows[0] != vec4(1.0, 0.0, 0.0, 0.0) || rows[1] != vec4(0.0, 1.0, 0.0, 0.0) ||
+         rows[2] != vec4(0.0, 0.0, 1.0, 0.0);
+}
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  ivec2 outputSize = ivec2(frame.upscale.zw);
+  if (any(greaterThanEqual(pixel, outputSize))) return;
+  ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
+  vec2 scale = vec2(renderSize) / vec2(outputSize);  // render pixels per output pixel
+  vec2 jitter = frame.upscale.xy;
+  // This pixel's centre in render pixels, where this frame's sample i lies at i + jitter.
+  vec2 samplePosition = (vec2(pixel) + 0.5) * scale - 0.5 - jitter;
+
+  // The four samples around this pixel: the bilinear upscale, their range (for the clamp) and
+  // their weighted sum for this pixel.
+  vec2 base = floor(samplePosition);
+  vec2 f = samplePosition - base;
+  vec3 corners[4];
+  vec3 low = vec3(1.0), high = vec3(0.0), weighted = vec3(0.0);
+  float weight = 0.0;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 offset = ivec2(corner & 1, corner >> 1);
+    ivec2 at = clamp(ivec2(base) + offset, ivec2(0), renderSize - 1);
+    vec3 colour = imageLoad(currentImage, at).rgb;
+    corners[corner] = colour;
+    low = min(low, colour);
+    high = max(high, colour);
+    float w = sampleWeight((vec2(offset) - f) / scale);
+    weighted += w * colour;
+    weight += w;
+  }
+  vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
+
+  // Where this pixel's point was in the previous frame, in output pixels: the nearest sample's
+  // motion (render pixels, without this frame's jitter) applied to this pixel.
+  ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
+  vec4 motion = imageLoad(motionImage, nearest);
+  uint seenInstance = uint(motion.w);
+  vec2 previous = vec2(pixel) + (motion.xy - (vec2(nearest) + jitter)) / scale;
+  vec3 history = vec3(0.0);
+  float historyWeight = 0.0;
+  ivec2 previousPixel = ivec2(floor(previous + 0.5));
+  bool onImage = all(greaterThanEqual(previousPixel, ivec2(0))) &&
+                 all(lessThan(previousPixel, outputSize));
+  // The history is dropped where it showed a moving instance other than the one seen now: what
+  // the mover uncovered (no trail behind it).
+  if (frame.denoise.x == 0u && motion.z > 0.0 && onImage) {
+    uint shown = imageLoad(historyInstanceImage, previousPixel).r;
+    if (shown == seenInstance || !instanceMoved(shown)) {
+      // Bilinear over the four history pixels around `previous` that are on the image.
+      vec2 from = floor(previous);
+      vec2 g = previous - from;
+      vec4 sum = vec4(0.0);
+      float taps = 0.0;
+      for (int tap = 0; tap < 4; ++tap) {
+        ivec2 at = ivec2(from) + ivec2(tap & 1, tap >> 1);
+        float w = ((tap & 1) != 0 ? g.x : 1.0 - g.x) * ((tap >> 1) != 0 ? g.y : 1.0 - g.y);
+        if (w == 0.0 || any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, outputSize)))
+          continue;
+        sum += w * imageLoad(historyImage, at);
+        taps += w;
+      }
+      if (taps > 1.0e-3) {
+        history = clamp(sum.rgb / taps, low, high);
+        historyWeight = sum.a / taps;
+      }
+    }
+  }
+  // At most UPSCALE_MAX_HISTORY_FRAMES frames' worth of the weight this pixel expects a frame
+  // (the bump's integral, pi r^2 / 3, over the output pixels a sample covers).
+  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
+  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
+  float total = historyWeight + weight;
+  vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
+  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
+  imageStore(historyNextImage, pixel, vec4(accumulated, total));
+  imageStore(historyInstanceNextImage, pixel, uvec4(seenInstance));
+  // Quantized with round-to-nearest, as the tonemap does, so the UNORM store is exact.
+  imageStore(displayImage, pixel, vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0));
+}
