@@ -9,6 +9,7 @@ int commandRender(const Options& options);
 int commandPreview(const Options& options);
 int commandBench(const Options& options);
 int commandBenchQuality(const Options& options);
+int commandBenchUpscale(const Options& options);
 int commandValidate(const Options& options);
 int commandInfo(const Options& options);
 int commandDevices();

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     if (options.command == "preview") return app::commandPreview(options);
     if (options.command == "info") return app::commandInfo(options);
     if (options.command == "bench-quality") return app::commandBenchQuality(options);
+    if (options.command == "bench-upscale") return app::commandBenchUpscale(options);
     if (options.command == "replay") return app::commandReplay(options);
     if (options.command == "soak") return app::commandSoak(options);
     if (options.command == "bench-input") return app::commandBenchInput(options);

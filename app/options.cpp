@@ -27,6 +27,10 @@ const std::vector<CommandSpec> kCommands{
     {"bench-quality", "<level.json>",
      "soft-shadow error (RMSE, SSIM) against GPU time: a table, a CSV\n"
      "and a log-log plot in --out DIR (default out/)"},
+    {"bench-upscale", "<level.json>",
+     "the presented picture's error (RMSE, SSIM) against a supersampled one at\n"
+     "--upscale WxH (default 1280x720): bilinear upscale, native 2x, temporal\n"
+     "upscaling static and strafing; a table, a CSV and a plot in --out DIR"},
     {"bench-input", "",
      "time each file reader (level, replay, settings, progress, glTF)\n"
      "on worst-shaped input at 1x, 4x and 16x size (docs/ROBUSTNESS.md)"},
@@ -51,9 +55,10 @@ struct OptionSpec {
 };
 
 // The commands that make a Vulkan device and render with it.
-const std::vector<std::string> kRendering{"play",          "render", "preview", "bench",
-                                          "bench-quality", "replay", "soak"};
-const std::vector<std::string> kPicture{"render", "preview", "bench", "bench-quality"};
+const std::vector<std::string> kRendering{"play",          "render",        "preview", "bench",
+                                          "bench-quality", "bench-upscale", "replay",  "soak"};
+const std::vector<std::string> kPicture{"render", "preview", "bench", "bench-quality",
+                                        "bench-upscale"};
 
 std::vector<std::string> join(std::vector<std::string> a, const std::vector<std::string>& b) {
   a.insert(a.end(), b.begin(), b.end());
@@ -64,11 +69,11 @@ const std::vector<OptionSpec> kOptions{
     {"--size",
      "WxH",
      "image size (render: 320x180; play: render size, scaled to the window)",
-     {"play", "render", "preview", "bench", "bench-quality", "soak"}},
+     {"play", "render", "preview", "bench", "bench-quality", "bench-upscale", "soak"}},
     {"--out",
      "FILE",
      "PNG to write (render: out/<level>.png; bench-quality: a directory)",
-     {"render", "preview", "bench-quality"}},
+     {"render", "preview", "bench-quality", "bench-upscale"}},
     {"--frames",
      "N",
      "frames to render (render: 1, bench: 300, soak: 3000)",
@@ -90,7 +95,7 @@ const std::vector<OptionSpec> kOptions{
      "WxH",
      "upscale temporally to this output size: jittered rays accumulated into\na history at WxH "
      "(the --size again gives plain temporal anti-aliasing)",
-     {"render", "bench"}},
+     {"render", "bench", "bench-upscale"}},
     {"--no-upscale",
      "",
      "scale the picture to the window with a bilinear blit instead of temporal\nupscaling",
@@ -99,7 +104,10 @@ const std::vector<OptionSpec> kOptions{
     {"--validate", "", "enable the Vulkan validation layer (with synchronization checks)",
      join(kRendering, {"devices"})},
     {"--reference", "", "ground truth, averaging --spp raw soft-shadow samples", {"render"}},
-    {"--spp", "N", "samples per pixel for --reference (default 256)", {"render", "bench-quality"}},
+    {"--spp",
+     "N",
+     "samples per pixel for --reference (default 256)",
+     {"render", "bench-quality", "bench-upscale"}},
     {"--watch", "", "keep running and re-render on every save", {"preview"}},
     {"--watch-limit",
      "N",

@@ -748,10 +748,9 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.previousCameraForward = previous.cameraForward;
   uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
                                 denoiserIterations(frame), 0u);
-  if (upscaler_) {
-    const glm::vec2 jitter = probeOnly ? glm::vec2(0.0f) : TemporalUpscaler::jitter(jitterIndex_++);
-    uniforms.upscale =
-        glm::vec4(jitter, float(upscaler_->outputWidth()), float(upscaler_->outputHeight()));
+  if (!probeOnly) {
+    const glm::vec2 jitter = upscaler_ ? TemporalUpscaler::jitter(jitterIndex_++) : frame.jitter;
+    uniforms.upscale = glm::vec4(jitter, float(outputWidth()), float(outputHeight()));
   }
   if (probeOnly) {
     if (focusBox_) uniforms.probeLaunch = glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u);

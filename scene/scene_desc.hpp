@@ -166,6 +166,9 @@ struct FrameDesc {
   bool resetHistory = false;
   // Soft shadows: average raw samples over frames with no filtering (ground truth).
   bool referenceAccumulation = false;
+  // The camera rays' offset from the pixel centres (pixels), for supersampled references by a
+  // renderer without temporal upscaling (one with it follows its own sequence).
+  glm::vec2 jitter{0.0f};
 };
 
 }  // namespace scene

@@ -111,8 +111,8 @@ struct FrameUniforms {
   // A probe-only frame (z: 1) traces just the focus regions' box, whose top-left pixel is xy,
   // and finds what each path reaches without shading it or writing any image.
   uvec4 probeLaunch;
-  // Temporal upscaling: xy the camera rays' offset from the pixel centres (pixels, in
-  // [-0.5, 0.5); 0 without upscaling and in probe frames), zw the output size.
+  // xy: the camera rays' offset from the pixel centres (pixels, in [-0.5, 0.5): the upscaler's
+  // sequence, else the frame's own; 0 in probe frames); zw: the output size.
   vec4 upscale;
 };
 

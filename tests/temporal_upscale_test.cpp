@@ -1,0 +1,215 @@
+// Temporal upscaling: a 32x18 picture accumulated into a 128x72 history (4x, as play's 320x180
+// in a 1280x720 window), and probes that do not see the jitter.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "game/primitives.hpp"
+#include "render/temporal_upscaler.hpp"
+#include "scene/color.hpp"
+#include "scene_builder.hpp"
+#include "vulkan_fixture.hpp"
+
+namespace {
+
+using test::at;
+using test::SceneBuilder;
+
+constexpr uint32_t kRenderWidth = 32, kRenderHeight = 18;
+constexpr uint32_t kOutputWidth = 128, kOutputHeight = 72;
+// A white box against a dark wall 5 m away, seen head-on; the box's x per frame is given.
+constexpr float kBoxDepth = -3.0f;
+
+scene::SceneDesc boxScene(float boxX) {
+  SceneBuilder builder;
+  scene::MaterialDesc dark, white;
+  dark.baseColor = glm::vec3(0.1f);
+  white.baseColor = glm::vec3(1.0f);
+  white.emissive = glm::vec3(1.0f);
+  const uint32_t wall = builder.material(dark), paint = builder.material(white);
+  builder.instance(builder.mesh(game::primitives::box({20.0f, 20.0f, 0.1f})), wall,
+                   at({0.0f, 0.0f, -5.0f}));
+  builder.instance(builder.mesh(game::primitives::box({0.8f, 0.8f, 0.8f})), paint,
+                   at({boxX, 0.0f, kBoxDepth}));
+  scene::LightDesc light;
+  light.position = glm::vec3(0.0f, 2.0f, 0.0f);
+  light.intensity = 4.0f;
+  builder.light(light);
+  return builder.scene;
+}
+
+scene::FrameDesc frameAt(uint32_t index) {
+  scene::FrameDesc frame;
+  frame.tonemap = scene::Tonemap::Identity;
+  frame.frameIndex = index;
+  return frame;
+}
+
+// Green channel in [0, 1], rows top to bottom.
+std::vector<float> green(const std::vector<uint8_t>& pixels) {
+  std::vector<float> values;
+  for (size_t i = 1; i < pixels.size(); i += 4) values.push_back(float(pixels[i]) / 255.0f);
+  return values;
+}
+
+double rmse(const std::vector<float>& a, const std::vector<float>& b,
+            const std::vector<bool>* only) {
+  double sum = 0.0;
+  size_t count = 0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (only && !(*only)[i]) continue;
+    sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
+    ++count;
+  }
+  return std::sqrt(sum / double(std::max<size_t>(count, 1)));
+}
+
+class TemporalUpscaleTest : public test::VulkanTest {
+ protected:
+  static std::unique_ptr<render::Renderer> upscaler(const scene::SceneDesc& scene) {
+    render::RendererOptions options;
+    options.width = kRenderWidth;
+    options.height = kRenderHeight;
+    options.outputWidth = kOutputWidth;
+    options.outputHeight = kOutputHeight;
+    return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
+  }
+
+  // The box scene at the output size, averaged in linear light over 16 jittered frames.
+  static std::vector<float> reference(float boxX) {
+    render::RendererOptions options;
+    options.width = kOutputWidth;
+    options.height = kOutputHeight;
+    render::Renderer renderer(context(), compiler(), boxScene(boxX), options);
+    constexpr uint32_t kSamples = 16;
+    std::vector<double> sum(size_t(kOutputWidth) * kOutputHeight, 0.0);
+    for (uint32_t i = 0; i < kSamples; ++i) {
+      scene::FrameDesc frame = frameAt(i);
+      frame.jitter = render::TemporalUpscaler::jitter(i * 5u + 1u);
+      renderer.renderFrame(frame);
+      const std::vector<float> values = green(renderer.pixels());
+      for (size_t k = 0; k < sum.size(); ++k) sum[k] += scene::srgbToLinear(values[k]);
+    }
+    std::vector<float> result;
+    for (double value : sum) result.push_back(scene::linearToSrgb(float(value / kSamples)));
+    return result;
+  }
+
+  static void moveBox(render::Renderer& renderer, float boxX) {
+    const std::vector<glm::mat4> transforms = {at({0.0f, 0.0f, -5.0f}),
+                                               at({boxX, 0.0f, kBoxDepth})};
+    renderer.setInstanceTransforms(transforms);
+  }
+};
+
+TEST_F(TemporalUpscaleTest, the_output_is_the_output_size_and_a_static_view_converges) {
+  auto renderer = upscaler(boxScene(0.0f));
+  EXPECT_EQ(renderer->outputWidth(), kOutputWidth);
+  EXPECT_EQ(renderer->outputHeight(), kOutputHeight);
+  const std::vector<float> expected = reference(0.0f);
+  std::vector<double> errors;
+  for (uint32_t frame = 1; frame <= 32; ++frame) {
+    renderer->renderFrame(frameAt(frame));
+    ASSERT_EQ(renderer->pixels().size(), size_t(kOutputWidth) * kOutputHeight * 4);
+    if (frame == 1 || frame == 8 || frame == 32)
+      errors.push_back(rmse(green(renderer->pixels()), expected, nullptr));
+  }
+  std::printf("RMSE after 1, 8, 32 frames: %.5f %.5f %.5f\n", errors[0], errors[1], errors[2]);
+  EXPECT_LT(errors[1], errors[0]);  // the jittered samples add detail the first frame lacks
+  EXPECT_LE(errors[2], errors[1]);  // and it settles rather than drifting
+}
+
+TEST_F(TemporalUpscaleTest, a_moving_box_leaves_no_trail_longer_than_2_output_pixels) {
+  // The box slides one render pixel (4 output pixels) to the right a frame for 16 frames.
+  const float pixelAtBox = 2.0f * -kBoxDepth * std::tan(glm::radians(30.0f)) / kRenderHeight;
+  const auto boxAt = [&](uint32_t frame) { return -0.8f + pixelAtBox * float(frame); };
+  auto renderer = upscaler(boxScene(boxAt(0)));
+  const uint32_t frames = 16;
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    moveBox(*renderer, boxAt(frame));
+    renderer->renderFrame(frameAt(frame));
+  }
+  const std::vector<float> shown = green(renderer->pixels());
+  const std::vector<float> expected = reference(boxAt(frames - 1));
+  // Along each row through the box, not within a render pixel (4 output pixels) of its top and
+  // bottom edges, where this frame's samples blend the box and the wall whatever the history:
+  // the pixels left of its trailing edge that still differ from the wall by more than a tenth.
+  int longestTrail = 0, rowsThroughBox = 0;
+  for (uint32_t y = 0; y < kOutputHeight; ++y) {
+    const float* row = &expected[size_t(y) * kOutputWidth];
+    uint32_t edge = 0;
+    while (edge < kOutputWidth && row[edge] < 0.5f) ++edge;
+    auto throughBox = [&](uint32_t at) {
+      const float* other = &expected[size_t(at) * kOutputWidth];
+      return *std::max_element(other, other + kOutputWidth) >= 0.95f;
+    };
+    if (edge == kOutputWidth || edge < 2 || y < 4 || y + 4 >= kOutputHeight || !throughBox(y - 4) ||
+        !throughBox(y + 4))
+      continue;
+    ++rowsThroughBox;
+    int trail = 0;
+    for (int x = int(edge) - 1; x >= 0; --x) {
+      const size_t i = size_t(y) * kOutputWidth + size_t(x);
+      if (std::abs(shown[i] - expected[i]) <= 0.1f) break;
+      ++trail;
+    }
+    longestTrail = std::max(longestTrail, trail);
+  }
+  std::printf("longest trail: %d output px over %d rows\n", longestTrail, rowsThroughBox);
+  EXPECT_GT(rowsThroughBox, 5);
+  EXPECT_LE(longestTrail, 2);
+}
+
+TEST_F(TemporalUpscaleTest, a_disoccluded_region_is_within_the_static_error_after_8_frames) {
+  // 32 frames with the box at -0.5 m, then it jumps to +0.7 m and 8 frames follow.
+  auto renderer = upscaler(boxScene(-0.5f));
+  for (uint32_t frame = 0; frame < 32; ++frame) renderer->renderFrame(frameAt(frame));
+  const std::vector<float> before = green(renderer->pixels());
+  moveBox(*renderer, 0.7f);
+  for (uint32_t frame = 32; frame < 40; ++frame) renderer->renderFrame(frameAt(frame));
+  const std::vector<float> after = green(renderer->pixels());
+  const std::vector<float> expected = reference(0.7f);
+  std::vector<bool> uncovered(expected.size());
+  size_t uncoveredPixels = 0;
+  for (size_t i = 0; i < expected.size(); ++i) {
+    uncovered[i] = before[i] > 0.5f && expected[i] < 0.3f;  // the box was there, the wall is now
+    uncoveredPixels += uncovered[i];
+  }
+  auto fresh = upscaler(boxScene(0.7f));
+  for (uint32_t frame = 0; frame < 8; ++frame) fresh->renderFrame(frameAt(frame));
+  const double staticError = rmse(green(fresh->pixels()), expected, nullptr);
+  const double uncoveredError = rmse(after, expected, &uncovered);
+  std::printf("%zu uncovered pixels: RMSE %.5f; static after 8 frames %.5f\n", uncoveredPixels,
+              uncoveredError, staticError);
+  EXPECT_GT(uncoveredPixels, 100u);
+  EXPECT_LE(uncoveredError, staticError);
+}
+
+TEST_F(TemporalUpscaleTest, probe_frames_count_as_plain_full_frames_do_jitter_or_not) {
+  const scene::SceneDesc scene = boxScene(0.1f);
+  scene::ProbeRequest request;
+  request.focus.push_back({1, {0.5f, 0.5f}});
+  request.focus.push_back({0, {0.3f, 0.2f}});
+  render::RendererOptions options;
+  options.width = kRenderWidth;
+  options.height = kRenderHeight;
+  render::Renderer plain(context(), compiler(), scene, options);
+  plain.setProbes(request);
+  plain.renderFrame(frameAt(0));
+  const std::vector<uint32_t> full = plain.probeCounts().focusPixels;
+  plain.renderProbeFrame(frameAt(1));
+  EXPECT_EQ(plain.probeCounts().focusPixels, full);
+  auto upscaled = upscaler(scene);
+  upscaled->setProbes(request);
+  for (uint32_t frame = 0; frame < 3; ++frame) {
+    upscaled->renderFrame(frameAt(frame));  // jittered pictures between the probe frames
+    upscaled->renderProbeFrame(frameAt(frame));
+    EXPECT_EQ(upscaled->probeCounts().focusPixels, full) << "probe frame " << frame;
+  }
+  EXPECT_GT(full[0], 0u);
+  EXPECT_GT(full[1], 0u);
+}
+
+}  // namespace
