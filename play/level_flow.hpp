@@ -25,7 +25,7 @@ struct PlayedLevel {
   std::unique_ptr<sim::Simulation> simulation;
   std::filesystem::path file;
   uint32_t renderWidth = 320, renderHeight = 180;  // the simulation's rays and probes
-  uint32_t outputWidth = 0, outputHeight = 0;       // its upscaled picture (0: not upscaled)
+  uint32_t outputWidth = 0, outputHeight = 0;      // its upscaled picture (0: not upscaled)
   std::optional<float> activeFov;                  // what the level started with
   float activeScale = 0.0f;
   game::TickClock tickClock;  // real time into ticks

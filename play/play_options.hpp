@@ -12,8 +12,8 @@ namespace play {
 struct PlayOptions {
   // --size WxH fixes the picture; otherwise it follows the window and the render scale.
   std::optional<std::pair<uint32_t, uint32_t>> pictureSize;
-  uint64_t quitAfterTicks = 0;                   // exit cleanly after this many ticks (0: play on)
-  bool hudOff = false;                           // no heads-up display or text over the picture
+  uint64_t quitAfterTicks = 0;  // exit cleanly after this many ticks (0: play on)
+  bool hudOff = false;          // no heads-up display or text over the picture
   // Temporal upscaling of the picture to the window's size (false: the window's blit scales it).
   bool upscale = true;
   std::optional<std::filesystem::path> record;   // write the first level's run as a replay

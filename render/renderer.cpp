@@ -748,13 +748,12 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.previousCameraForward = previous.cameraForward;
   uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
                                 denoiserIterations(frame), 0u);
-  if (!probeOnly) {
+  if (probeOnly) {  // un-jittered, launched over the focus regions' box
+    uniforms.probeLaunch =
+        focusBox_ ? glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u) : glm::uvec4(0u, 0u, 1u, 0u);
+  } else {
     const glm::vec2 jitter = upscaler_ ? TemporalUpscaler::jitter(jitterIndex_++) : frame.jitter;
     uniforms.upscale = glm::vec4(jitter, float(outputWidth()), float(outputHeight()));
-  }
-  if (probeOnly) {
-    if (focusBox_) uniforms.probeLaunch = glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u);
-    uniforms.probeLaunch.z = 1u;
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one
