@@ -9,6 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/data_paths.hpp"
+#include "app/quality_plot.hpp"
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
@@ -57,13 +58,7 @@ Images capture(const render::Renderer& renderer) {
 }
 
 scene::CameraDesc cameraAt(const game::Level& level, uint32_t frame, bool moving) {
-  scene::CameraDesc camera = level.camera;
-  if (moving) {
-    const float yaw = glm::radians(camera.yawDegrees);
-    const glm::vec3 right(std::cos(yaw), 0.0f, -std::sin(yaw));
-    camera.position += right * (kCameraStepMetres * float(frame));
-  }
-  return camera;
+  return moving ? strafed(level.camera, kCameraStepMetres * float(frame)) : level.camera;
 }
 
 class QualityBench {
@@ -146,19 +141,12 @@ void writePlot(const fs::path& file, const std::vector<Row>& rows, const std::st
   }
   const double x0 = std::log10(std::max(minMs, 1e-4)) - 0.1, x1 = std::log10(maxMs) + 0.1;
   const double y0 = std::log10(std::max(minError, 1e-5)) - 0.1, y1 = std::log10(maxError) + 0.1;
-  const double left = 70, top = 40, plotWidth = 560, plotHeight = 360;
+  const PlotArea area;
+  const double left = area.left, top = area.top, plotWidth = area.width, plotHeight = area.height;
   auto px = [&](double ms) { return left + (std::log10(ms) - x0) / (x1 - x0) * plotWidth; };
   auto py = [&](double error) { return top + (y1 - std::log10(error)) / (y1 - y0) * plotHeight; };
   std::ofstream svg(file);
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='700' height='460' "
-         "font-family='sans-serif' font-size='12'>\n<rect width='700' height='460' fill='white'/>\n"
-      << "<text x='" << left << "' y='24' font-size='14'>" << title << "</text>\n"
-      << "<rect x='" << left << "' y='" << top << "' width='" << plotWidth << "' height='"
-      << plotHeight << "' fill='none' stroke='black'/>\n"
-      << "<text x='" << left + plotWidth / 2 - 80 << "' y='" << top + plotHeight + 34
-      << "'>GPU time per result (ms, log)</text>\n"
-      << "<text x='14' y='" << top + plotHeight / 2 << "' transform='rotate(-90 14 "
-      << top + plotHeight / 2 << ")'>visibility RMSE (log)</text>\n";
+  writePlotFrame(svg, area, title, "GPU time per result (ms, log)", "visibility RMSE (log)");
   for (int decade = int(std::ceil(x0)); decade <= int(std::floor(x1)); ++decade)
     svg << "<text x='" << px(std::pow(10.0, decade)) - 10 << "' y='" << top + plotHeight + 16
         << "'>1e" << decade << "</text>\n";

@@ -11,6 +11,7 @@
 
 #include "app/commands.hpp"
 #include "app/data_paths.hpp"
+#include "app/quality_plot.hpp"
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
@@ -91,12 +92,8 @@ std::vector<float> luminance(const Picture& picture) {
   return result;
 }
 
-scene::CameraDesc strafed(const game::Level& level, uint32_t frame) {
-  scene::CameraDesc camera = level.camera;
-  const float yaw = glm::radians(camera.yawDegrees);
-  camera.position +=
-      glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw)) * (kStrafePerFrame * float(frame));
-  return camera;
+scene::CameraDesc strafedAt(const game::Level& level, uint32_t frame) {
+  return strafed(level.camera, kStrafePerFrame * float(frame));
 }
 
 class UpscaleBench {
@@ -164,7 +161,7 @@ class UpscaleBench {
       const bool measured =
           std::find(checkpoints.begin(), checkpoints.end(), i) != checkpoints.end();
       const render::FrameStats stats =
-          r->renderFrame(frame(i - 1, moving ? strafed(level_, i - 1) : level_.camera), measured);
+          r->renderFrame(frame(i - 1, moving ? strafedAt(level_, i - 1) : level_.camera), measured);
       if (measured) results.push_back({pictureOf(*r), stats.gpu.tonemapMs});
     }
     return results;
@@ -202,18 +199,13 @@ Row measure(const std::string& name, uint32_t frames, double gpuMs, const Pictur
 void writePlot(const fs::path& file, const std::vector<Row>& rows, const std::string& title) {
   double maxError = 0.0;
   for (const Row& row : rows) maxError = std::max(maxError, row.rmse);
-  const double left = 70, top = 40, plotWidth = 560, plotHeight = 360, maxFrames = 32;
+  const PlotArea area;
+  const double left = area.left, top = area.top, plotWidth = area.width, plotHeight = area.height;
+  const double maxFrames = 32;
   auto px = [&](double frames) { return left + frames / maxFrames * plotWidth; };
   auto py = [&](double error) { return top + (1.0 - error / (maxError * 1.1)) * plotHeight; };
   std::ofstream svg(file);
-  svg << "<svg xmlns='http://www.w3.org/2000/svg' width='700' height='460' "
-         "font-family='sans-serif' font-size='12'>\n<rect width='700' height='460' fill='white'/>\n"
-      << "<text x='" << left << "' y='24' font-size='14'>" << title << "</text>\n"
-      << "<rect x='" << left << "' y='" << top << "' width='" << plotWidth << "' height='"
-      << plotHeight << "' fill='none' stroke='black'/>\n"
-      << "<text x='" << left + plotWidth / 2 - 40 << "' y='" << top + plotHeight + 34
-      << "'>frames</text>\n<text x='14' y='" << top + plotHeight / 2
-      << "' transform='rotate(-90 14 " << top + plotHeight / 2 << ")'>luminance RMSE</text>\n";
+  writePlotFrame(svg, area, title, "frames", "luminance RMSE");
   for (int frames = 0; frames <= 32; frames += 8)
     svg << "<text x='" << px(frames) - 6 << "' y='" << top + plotHeight + 16 << "'>" << frames
         << "</text>\n";
@@ -285,7 +277,7 @@ int commandBenchUpscale(const Options& options) {
   for (size_t i = 0; i < movingCheckpoints.size(); ++i) {
     const uint32_t frames = movingCheckpoints[i];
     const Picture moved =
-        bench.reference(strafed(level, frames - 1), outputWidth, outputHeight, samples);
+        bench.reference(strafedAt(level, frames - 1), outputWidth, outputHeight, samples);
     rows.push_back(measure("TAAU moving after " + std::to_string(frames), frames,
                            movingRuns[i].second, movingRuns[i].first, moved));
     writePicture(outDirectory / ("upscale_" + stem + "_moving_" + std::to_string(frames) + ".png"),
