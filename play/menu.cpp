@@ -64,7 +64,12 @@ void drawSettings(Menu& menu, const PlayedLevel& played, game::Settings& setting
     ImGui::TextUnformatted("Field of view and render scale apply when a level starts.");
     if (ImGui::Button("Apply now (restarts the level)")) menu.pendingLevel = played.file;
   }
-  ImGui::Text("Picture: %ux%u, scaled to the window", played.renderWidth, played.renderHeight);
+  if (played.outputWidth > 0) {
+    ImGui::Text("Picture: %ux%u, upscaled to %ux%u, scaled to the window", played.renderWidth,
+                played.renderHeight, played.outputWidth, played.outputHeight);
+  } else {
+    ImGui::Text("Picture: %ux%u, scaled to the window", played.renderWidth, played.renderHeight);
+  }
 
   ImGui::Separator();
   ImGui::TextUnformatted("Keys");
