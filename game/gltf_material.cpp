@@ -72,6 +72,15 @@ class MaterialMapper {
                                       "occlusionTexture", /*srgb=*/false, result);
     result.emissiveTexture = texture(material.emissiveTexture, TextureRole::Emissive,
                                      "emissiveTexture", /*srgb=*/true, result);
+    // Exporters write BLEND for surfaces nothing makes transparent (the Khronos sample
+    // BoxVertexColors does); as glass such a surface would be a filter of its colour, black
+    // where two faces of different colours overlap.
+    if (result.alphaBlend && result.alpha >= 1.0f && !result.colorTexture) {
+      warnings_.push_back(file_.string() + ": " + label_ +
+                          " has alphaMode BLEND with an opaque base colour and no base colour "
+                          "texture: drawn opaque (vertex colours' alpha is not read)");
+      result.alphaBlend = false;
+    }
     return result;
   }
 

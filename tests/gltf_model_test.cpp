@@ -413,6 +413,32 @@ TEST_F(GltfModelTest, what_is_not_drawn_warns_once_per_feature_and_a_required_ex
                 "honour (it supports KHR_materials_emissive_strength, KHR_texture_transform)");
 }
 
+// BLEND where nothing is transparent (as the Khronos sample BoxVertexColors has it) is drawn
+// opaque with a warning, not as a filter of its colour; alpha below 1 stays BLEND.
+TEST_F(GltfModelTest, blend_with_an_opaque_base_colour_and_no_texture_is_drawn_opaque) {
+  GltfBuilder gltf;
+  json primitive = gltf.primitive(kTriangle);
+  primitive["material"] = 0;
+  gltf.addMesh("box", {primitive});
+  gltf.document["materials"] = {
+      {{"name", "Default"},
+       {"alphaMode", "BLEND"},
+       {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1.0}}}}}};
+  gltf.write(root_ / "opaque_blend.gltf");
+  const game::GltfModel opaque = game::loadGltfModel(root_ / "opaque_blend.gltf", root_);
+  EXPECT_FALSE(opaque.materials.at(0).alphaBlend);
+  EXPECT_EQ(opaque.warnings,
+            (std::vector<std::string>{(root_ / "opaque_blend.gltf").string() +
+                                      ": material \"Default\" has alphaMode BLEND with an opaque "
+                                      "base colour and no base colour texture: drawn opaque "
+                                      "(vertex colours' alpha is not read)"}));
+  gltf.document["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.8, 0.8, 0.8, 0.5};
+  gltf.write(root_ / "half_blend.gltf");
+  const game::GltfModel half = game::loadGltfModel(root_ / "half_blend.gltf", root_);
+  EXPECT_TRUE(half.materials.at(0).alphaBlend);
+  EXPECT_TRUE(half.warnings.empty());
+}
+
 // A one-triangle model whose material uses image 0 as its base colour texture.
 GltfBuilder texturedTriangle(const json& image) {
   GltfBuilder gltf;
