@@ -1,20 +1,14 @@
 #include "play/frame_parts.hpp"
 
-#include <algorithm>
 #include <cstdio>
+
+#include "render/frame_time_percentiles.hpp"
 
 namespace play {
 namespace {
 
 constexpr std::array<const char*, kFrameParts> kPartNames = {"input", "ticks", "picture",
                                                              "interface", "present"};
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0.0;
-  const auto middle = values.begin() + std::ptrdiff_t(values.size() / 2);
-  std::nth_element(values.begin(), middle, values.end());
-  return *middle;
-}
 
 }  // namespace
 
@@ -41,7 +35,7 @@ std::string FramePartTimes::mediansText(unsigned long long probeFrames) const {
   char item[64];
   for (std::size_t part = 0; part < kFrameParts; ++part) {
     std::snprintf(item, sizeof item, "%s%s %.2f", part ? "  " : "", kPartNames[part],
-                  median(frames_[part]));
+                  render::frameTimePercentiles(frames_[part]).p50);
     text += item;
   }
   std::snprintf(item, sizeof item, " ms (medians of %zu frames; %llu probe frames)",

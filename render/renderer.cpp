@@ -239,10 +239,11 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "probe setup");
   const gpu::ProbeSetup noProbes{};
   probeSetup_.write(&noProbes, sizeof noProbes);
-  const bool upscaled = options.outputWidth > 0 && options.outputHeight > 0;
-  readback_ = Buffer(context,
-                     VkDeviceSize(upscaled ? options.outputWidth : options.width) *
-                         (upscaled ? options.outputHeight : options.height) * 4,
+  if (options.outputWidth > 0 && options.outputHeight > 0) {
+    upscaler_ = std::make_unique<TemporalUpscaler>(context, options.width, options.height,
+                                                   options.outputWidth, options.outputHeight);
+  }
+  readback_ = Buffer(context, VkDeviceSize(outputWidth()) * outputHeight() * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
 
   std::vector<TriangleGeometry> geometries;
@@ -291,10 +292,6 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   // No denoiser, no images or passes for it, in levels with hard shadows only.
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
-  if (upscaled) {
-    upscaler_ = std::make_unique<TemporalUpscaler>(context, options.width, options.height,
-                                                   options.outputWidth, options.outputHeight);
-  }
   routeLight_ = features.lightRoutes;
   routeMirrors_ = features.maxMirrorBounces;
   mirrorFaces_.resize(scene.instances.size());

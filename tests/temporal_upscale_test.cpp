@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "game/primitives.hpp"
+#include "render/image_metrics.hpp"
 #include "render/temporal_upscaler.hpp"
 #include "scene/color.hpp"
 #include "scene_builder.hpp"
@@ -54,16 +55,12 @@ std::vector<float> green(const std::vector<uint8_t>& pixels) {
   return values;
 }
 
-double rmse(const std::vector<float>& a, const std::vector<float>& b,
-            const std::vector<bool>* only) {
-  double sum = 0.0;
-  size_t count = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    if (only && !(*only)[i]) continue;
-    sum += (double(a[i]) - b[i]) * (double(a[i]) - b[i]);
-    ++count;
-  }
-  return std::sqrt(sum / double(std::max<size_t>(count, 1)));
+// The values of `values` where `where` holds.
+std::vector<float> only(const std::vector<float>& values, const std::vector<bool>& where) {
+  std::vector<float> kept;
+  for (size_t i = 0; i < values.size(); ++i)
+    if (where[i]) kept.push_back(values[i]);
+  return kept;
 }
 
 class TemporalUpscaleTest : public test::VulkanTest {
@@ -114,7 +111,7 @@ TEST_F(TemporalUpscaleTest, the_output_is_the_output_size_and_a_static_view_conv
     renderer->renderFrame(frameAt(frame));
     ASSERT_EQ(renderer->pixels().size(), size_t(kOutputWidth) * kOutputHeight * 4);
     if (frame == 1 || frame == 8 || frame == 32)
-      errors.push_back(rmse(green(renderer->pixels()), expected, nullptr));
+      errors.push_back(render::rootMeanSquareError(expected, green(renderer->pixels())));
   }
   std::printf("RMSE after 1, 8, 32 frames: %.5f %.5f %.5f\n", errors[0], errors[1], errors[2]);
   EXPECT_LT(errors[1], errors[0]);  // the jittered samples add detail the first frame lacks
@@ -179,8 +176,9 @@ TEST_F(TemporalUpscaleTest, a_disoccluded_region_is_within_the_static_error_afte
   }
   auto fresh = upscaler(boxScene(0.7f));
   for (uint32_t frame = 0; frame < 8; ++frame) fresh->renderFrame(frameAt(frame));
-  const double staticError = rmse(green(fresh->pixels()), expected, nullptr);
-  const double uncoveredError = rmse(after, expected, &uncovered);
+  const double staticError = render::rootMeanSquareError(expected, green(fresh->pixels()));
+  const double uncoveredError =
+      render::rootMeanSquareError(only(expected, uncovered), only(after, uncovered));
   std::printf("%zu uncovered pixels: RMSE %.5f; static after 8 frames %.5f\n", uncoveredPixels,
               uncoveredError, staticError);
   EXPECT_GT(uncoveredPixels, 100u);
