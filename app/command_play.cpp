@@ -47,6 +47,7 @@ play::PlayOptions playOptions(const Options& options) {
   playing.upscale = options.upscale;
   playing.record = options.record;
   playing.capture = options.capture;
+  playing.author = options.author;
   playing.levelLoading = levelLoadOptions();
   return playing;
 }
@@ -65,6 +66,8 @@ struct WindowDeleter {
 int commandPlay(const Options& options) {
   if (options.capture && options.quitAfterTicks == 0)
     throw UsageError("play: --capture needs --quit-after-ticks N (the tick whose frame it saves)");
+  if (options.author && options.record)
+    throw UsageError("play: --author flies through walls, which a replay cannot; drop --record");
   if (options.resetProgress) {
     game::saveProgress({}, game::progressFile());
     std::printf("progress reset: every level but the first is locked again\n");
@@ -132,16 +135,17 @@ int commandPlay(const Options& options) {
               context->deviceInfo().name.c_str());
   std::printf(
       "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause "
-      "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F3 probe values, "
-      "F12 screenshot\n");
+      "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F12 screenshot; "
+      "for authors: F3 overlay, F4 fly camera, F6 copy the view as JSON; saving the level "
+      "reloads it\n");
   std::fflush(stdout);
 
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   const play::PlayOptions playing = playOptions(options);
   int status = 0;
   {
-    play::Game game(playing, settings.settings, shippedLevels(findDataRoot()), window.get(),
-                    *context, compiler, *presenter);
+    play::Game game(playing, settings.settings, shippedLevels(findDataRoot()),
+                    shippedChapters(findDataRoot()), window.get(), *context, compiler, *presenter);
     status = game.run(level);
   }
   presenter.reset();

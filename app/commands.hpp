@@ -15,6 +15,7 @@ int commandInfo(const Options& options);
 int commandDevices();
 int commandVersion();  // the version and the Vulkan device the game would use
 int commandReplay(const Options& options);
+int commandCampaign(const Options& options);
 int commandSoak(const Options& options);
 int commandBenchInput(const Options& options);
 

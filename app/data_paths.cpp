@@ -55,6 +55,17 @@ std::vector<fs::path> shippedLevels(const fs::path& dataRoot) {
   return levels;
 }
 
+std::vector<std::string> shippedChapters(const fs::path& dataRoot) {
+  const fs::path levelsDirectory = dataRoot / "levels";
+  std::error_code error;
+  if (!fs::exists(levelsDirectory / "order.txt", error))
+    return std::vector<std::string>(shippedLevels(dataRoot).size());
+  std::vector<std::string> chapters;
+  for (const game::OrderedLevel& level : game::loadCampaign(levelsDirectory))
+    chapters.push_back(level.chapter);
+  return chapters;
+}
+
 game::LevelLoadOptions levelLoadOptions() {
   game::LevelLoadOptions options;
   options.assetRoots.push_back(findDataRoot() / "assets");

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
     if (options.command == "bench-quality") return app::commandBenchQuality(options);
     if (options.command == "bench-upscale") return app::commandBenchUpscale(options);
     if (options.command == "replay") return app::commandReplay(options);
+    if (options.command == "campaign") return app::commandCampaign(options);
     if (options.command == "soak") return app::commandSoak(options);
     if (options.command == "bench-input") return app::commandBenchInput(options);
     if (options.command == "help") {

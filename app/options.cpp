@@ -40,6 +40,10 @@ const std::vector<CommandSpec> kCommands{
     {"replay", "<replay.json...>",
      "run replays headless and check their expectations (exit 0\n"
      "when all hold); --trace FILE.csv for the per-tick values"},
+    {"campaign", "",
+     "run every shipped level's replays: each level in levels/order.txt needs\n"
+     "a winning and a failing one; prints the steps and game time of each win\n"
+     "and checks the campaign's figures (docs/LEVELS.md)"},
     {"soak", "<level.json>",
      "run --frames frames (default 3000) with the movers going and\n"
      "fail if resident memory grows more than 1 MB after frame 500;\n"
@@ -55,8 +59,9 @@ struct OptionSpec {
 };
 
 // The commands that make a Vulkan device and render with it.
-const std::vector<std::string> kRendering{"play",          "render",        "preview", "bench",
-                                          "bench-quality", "bench-upscale", "replay",  "soak"};
+const std::vector<std::string> kRendering{"play",   "render",        "preview",
+                                          "bench",  "bench-quality", "bench-upscale",
+                                          "replay", "campaign",      "soak"};
 const std::vector<std::string> kPicture{"render", "preview", "bench", "bench-quality",
                                         "bench-upscale"};
 
@@ -128,6 +133,10 @@ const std::vector<OptionSpec> kOptions{
      "save the first level's run as a replay (until won, lost or quit)",
      {"play"}},
     {"--reset-progress", "", "forget which levels were won", {"play"}},
+    {"--author",
+     "",
+     "start with the fly camera (F4): no gravity, collision, winning, losing\nor recording",
+     {"play"}},
     {"--window", "WxH", "the window's size (default 1280x720)", {"play"}},
     {"--capture",
      "FILE.png",
@@ -320,6 +329,8 @@ Options parseOptions(int argc, char** argv) {
       options.hudOff = true;
     } else if (argument == "--reset-progress") {
       options.resetProgress = true;
+    } else if (argument == "--author") {
+      options.author = true;
     } else if (argument == "--window") {
       uint32_t width = 0, height = 0;
       parseSize("--window", value(), &width, &height);

@@ -50,6 +50,7 @@ struct Options {
   bool hudOff = false;          // play: no heads-up display over the picture
   std::optional<std::filesystem::path> record;  // play: write the first level's run as a replay
   bool resetProgress = false;                   // play: lock every level but the first again
+  bool author = false;                          // play: start with the fly camera
   std::optional<std::pair<uint32_t, uint32_t>> windowSize;  // play: --window WxH
   std::optional<std::filesystem::path> capture;  // play: the last frame's window image (PNG)
   std::optional<std::filesystem::path> csv;      // bench: the table as CSV

@@ -106,6 +106,21 @@ void PlayerController::walk(const glm::vec3& displacement, const CollisionWorld&
     feet_ = stepped;
 }
 
+void PlayerController::fly(const PlayerInput& input) {
+  yawDegrees_ = std::remainder(yawDegrees_ + input.yawDeltaDegrees, 360.0f);
+  pitchDegrees_ = std::clamp(pitchDegrees_ + input.pitchDeltaDegrees, -89.0f, 89.0f);
+  glm::vec2 move = glm::clamp(input.move, glm::vec2(-1.0f), glm::vec2(1.0f));
+  if (glm::length(move) > 1.0f) move = glm::normalize(move);
+  const float yaw = glm::radians(yawDegrees_);
+  const glm::vec3 right(std::cos(yaw), 0.0f, -std::sin(yaw));
+  const glm::vec3 rise(0.0f, input.jump ? 1.0f : 0.0f, 0.0f);
+  const float speed = settings_.walkSpeed * FLY_SPEED_FACTOR;
+  feet_ += (right * move.x + viewDirection() * move.y + rise) * speed * TICK_SECONDS;
+  velocity_ = glm::vec3(0.0f);
+  grounded_ = false;
+  groundEntity_.reset();
+}
+
 void PlayerController::tick(const PlayerInput& input, const CollisionWorld& world) {
   const float dt = TICK_SECONDS;
   yawDegrees_ = std::remainder(yawDegrees_ + input.yawDeltaDegrees, 360.0f);

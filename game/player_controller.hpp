@@ -1,5 +1,6 @@
 #pragma once
 // First-person walking: a vertical capsule moved in fixed ticks against the collision world.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -38,6 +39,11 @@ class PlayerController {
   // ground. `world` already holds this tick's transforms.
   void tick(const PlayerInput& input, const CollisionWorld& world);
 
+  // One tick of the authors' fly camera: look, then move along the view (jump rises) at
+  // FLY_SPEED_FACTOR times the walking speed, through everything, without gravity.
+  void fly(const PlayerInput& input);
+  static constexpr float FLY_SPEED_FACTOR = 2.0f;
+
   glm::vec3 feet() const { return feet_; }
   glm::vec3 eye() const { return feet_ + glm::vec3(0.0f, settings_.eyeHeight, 0.0f); }
   float yawDegrees() const { return yawDegrees_; }
@@ -51,6 +57,7 @@ class PlayerController {
   // Places the feet (a respawn); the player starts falling from there.
   void teleport(const glm::vec3& feet);
   void setYawDegrees(float degrees) { yawDegrees_ = std::remainder(degrees, 360.0f); }
+  void setPitchDegrees(float degrees) { pitchDegrees_ = std::clamp(degrees, -89.0f, 89.0f); }
   // Only the vertical part lasts: walking sets the horizontal velocity every tick.
   void setVelocity(const glm::vec3& velocity) {
     velocity_ = velocity;

@@ -1,7 +1,9 @@
 #include "game/progress.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
+#include "game/json_positions.hpp"
 #include "game/user_json_file.hpp"
 #include "game/user_paths.hpp"
 
@@ -21,6 +23,27 @@ bool isLevelFileName(const std::string& name) {
   return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
 }
 
+// "best_ticks": {"01_first_light.json": 175, ...}; a bad entry is skipped with a message.
+void readBestTicks(UserJsonFile& opened, Progress& progress) {
+  const auto best = opened.root().find("best_ticks");
+  if (best == opened.root().end()) return;
+  if (!best->is_object()) {
+    opened.reportValue("/best_ticks",
+                       "expected an object of level file names and tick counts, got " +
+                           describeJson(*best) + "; no best times kept");
+    return;
+  }
+  for (const auto& [name, ticks] : best->items()) {
+    if (isLevelFileName(name) && ticks.is_number_unsigned() && ticks.get<uint64_t>() > 0) {
+      progress.bestTicks[name] = ticks.get<uint64_t>();
+    } else {
+      opened.reportValue("/best_ticks/" + escapeJsonPointerToken(name),
+                         "expected a level file name with a tick count above 0, got " +
+                             describeJson(ticks) + "; ignored");
+    }
+  }
+}
+
 }  // namespace
 
 ProgressLoad loadProgress(const fs::path& file) {
@@ -28,7 +51,8 @@ ProgressLoad loadProgress(const fs::path& file) {
   auto opened =
       UserJsonFile::open(file, kVersionKey, kProgressVersion, kWhenIgnored, load.messages);
   if (!opened) return load;
-  opened->reportUnknownKeys("", {kVersionKey, "completed"});
+  opened->reportUnknownKeys("", {kVersionKey, "completed", "best_ticks"});
+  readBestTicks(*opened, load.progress);
   const auto completed = opened->root().find("completed");
   if (completed == opened->root().end()) return load;
   if (!completed->is_array()) {
@@ -54,6 +78,8 @@ void saveProgress(const Progress& progress, const fs::path& file) {
   json[kVersionKey] = kProgressVersion;
   json["completed"] = Json::array();
   for (const std::string& level : progress.completed) json["completed"].push_back(level);
+  json["best_ticks"] = Json::object();
+  for (const auto& [level, ticks] : progress.bestTicks) json["best_ticks"][level] = ticks;
   writeFileAtomically(file, json.dump(2) + "\n");
 }
 
@@ -65,8 +91,19 @@ bool unlocked(const Progress& progress, const std::vector<std::string>& order,
   return progress.completed.contains(*std::prev(position));
 }
 
-void markWon(Progress& progress, const std::string& level) {
+std::optional<uint64_t> markWon(Progress& progress, const std::string& level, uint64_t ticks) {
   progress.completed.insert(level);
+  std::optional<uint64_t> before;
+  if (const auto best = progress.bestTicks.find(level); best != progress.bestTicks.end())
+    before = best->second;
+  if (ticks > 0 && (!before || ticks < *before)) progress.bestTicks[level] = ticks;
+  return before;
+}
+
+std::string gameTimeText(uint64_t ticks) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f s", double(ticks) / 60.0);
+  return text;
 }
 
 }  // namespace game

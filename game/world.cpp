@@ -86,7 +86,10 @@ void World::step(const PlayerInput& input) {
     place(e);
   }
 
-  player_.tick(input, collision_);
+  if (flying_)
+    player_.fly(input);
+  else
+    player_.tick(input, collision_);
 
   const bool pressed = input.interact && !interactWasDown_;
   interactWasDown_ = input.interact;
@@ -191,6 +194,11 @@ void World::setLocked(uint32_t entity, bool locked) {
 void World::respawnPlayer(const glm::vec3& feet, float yawDegrees) {
   player_.teleport(feet);
   player_.setYawDegrees(yawDegrees);
+}
+
+void World::placePlayer(const glm::vec3& feet, float yawDegrees, float pitchDegrees) {
+  respawnPlayer(feet, yawDegrees);
+  player_.setPitchDegrees(pitchDegrees);
 }
 
 std::vector<scene::LightDesc> World::lights() const {

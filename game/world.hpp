@@ -81,6 +81,14 @@ class World {
   // Puts the player's feet at `feet`, facing `yawDegrees`, at rest.
   void respawnPlayer(const glm::vec3& feet, float yawDegrees);
 
+  // ----- for level authors (play --author, F4; a live reload) -----
+
+  // The fly camera: the player moves through everything, without gravity (PlayerController::fly).
+  void setFlying(bool flying) { flying_ = flying; }
+  bool flying() const { return flying_; }
+  // Puts the player where a reloaded level should keep them: feet, yaw and pitch.
+  void placePlayer(const glm::vec3& feet, float yawDegrees, float pitchDegrees);
+
  private:
   // Counted in ticks so that a mover that plays from the start is exactly where the world's
   // time says (the same bits as before movers could be stopped).
@@ -111,6 +119,7 @@ class World {
   std::optional<uint32_t> picked_;
   std::optional<uint32_t> held_;
   bool interactWasDown_ = false;
+  bool flying_ = false;
 };
 
 }  // namespace game

@@ -6,6 +6,7 @@
 
 #include <GLFW/glfw3.h>
 
+#include "game/author_view.hpp"
 #include "game/level_loader.hpp"
 #include "play/frame_parts.hpp"
 #include "play/hud.hpp"
@@ -22,8 +23,8 @@ constexpr double kTitleSeconds = 0.5;  // how often the title's fps and progress
 }  // namespace
 
 Game::Game(const PlayOptions& options, const game::Settings& settings, std::vector<fs::path> levels,
-           GLFWwindow* window, const render::Context& context, render::ShaderCompiler& compiler,
-           render::Presenter& presenter)
+           std::vector<std::string> chapters, GLFWwindow* window, const render::Context& context,
+           render::ShaderCompiler& compiler, render::Presenter& presenter)
     : options_(options),
       settings_(settings),
       savedSettings_(settings),
@@ -32,7 +33,8 @@ Game::Game(const PlayOptions& options, const game::Settings& settings, std::vect
       compiler_(compiler),
       presenter_(presenter),
       levels_(std::move(levels)),
-      shownSwapchain_{presenter.extent(), presenter.presentMode()} {
+      shownSwapchain_{presenter.extent(), presenter.presentMode()},
+      flying_(options.author) {
   installEventCallbacks(window_, events_);
   keyCodes_ = keyCodesFor(settings_);
   float scaleX = 1.0f, scaleY = 1.0f;
@@ -40,6 +42,7 @@ Game::Game(const PlayOptions& options, const game::Settings& settings, std::vect
   // After the callbacks above: ImGui's GLFW backend calls them after its own.
   ui_ = std::make_unique<UiLayer>(context_, window_, presenter_, std::max(1.0f, scaleY));
   menu_.levelNames = levelDisplayNames(levels_, options_.levelLoading);
+  menu_.levelChapters = std::move(chapters);
 }
 
 int Game::run(const fs::path& firstLevel) {
@@ -70,7 +73,14 @@ int Game::run(const fs::path& firstLevel) {
       parts.start(FramePart::Ticks);
       runTicks(elapsed);
       quitting = options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks;
-      if (!quitting && advanceAfterOutcome(played_, now, levelSetup())) updateTitle(0.0);
+      if (!quitting && advanceAfterOutcome(played_, now, levelSetup())) {
+        updateTitle(0.0);
+        if (played_.campaignFinished) {  // the end screen wants the mouse
+          resetMenu(menu_, true);
+          setMouseCaptured(window_, look_, false);
+        }
+      }
+      reloadIfEdited(now);
     }
     if (quitting && options_.capture) presenter_.captureNextPresent();
     parts.start(FramePart::Picture);
@@ -84,7 +94,10 @@ int Game::run(const fs::path& firstLevel) {
       drawScreenText(played_, presenter_, fps_, authorOverlay_,
                      interact != settings_.keyBindings.end() ? interact->second : "E");
     }
-    if (paused_) drawPauseMenu(menu_, played_, levels_, settings_, keyCodes_, presenter_);
+    if (paused_)
+      drawPauseMenu(menu_, played_, levels_, settings_, keyCodes_, presenter_);
+    else if (played_.campaignFinished)
+      drawEndScreen(menu_, levels_);
     const render::OverlayDraw overlay = ui_->endFrame();
     parts.start(FramePart::Present);
     if (presenter_.present(played_.simulation->renderer(), hud, overlay)) ++framesShown_;
@@ -129,7 +142,62 @@ LevelSetup Game::levelSetup() const {
 
 void Game::load(const fs::path& file) {
   startLevel(played_, file, levelSetup());
+  played_.simulation->setAuthoring(flying_);
+  watcher_ = std::make_unique<game::LevelWatcher>(file, options_.levelLoading);
+  watcher_->poll();  // the files the level is made of, as they are now
+  watchedAt_ = played_.lastFrameAt;
   updateTitle(0.0);
+}
+
+void Game::reloadIfEdited(double now) {
+  constexpr double kWatchSeconds = 0.5;
+  if (!watcher_ || now - watchedAt_ < kWatchSeconds) return;
+  watchedAt_ = now;
+  switch (watcher_->poll()) {
+    case game::LevelWatcher::Event::Unchanged:
+      return;
+    case game::LevelWatcher::Event::Failed:
+      std::fprintf(stderr, "%s\n(keeping the level as it was)\n", watcher_->error().c_str());
+      return;
+    case game::LevelWatcher::Event::Reloaded:
+      break;
+  }
+  const game::World& world = played_.simulation->world();
+  const glm::vec3 feet = world.feetPosition();
+  const float yaw = world.yawDegrees(), pitch = world.pitchDegrees();
+  std::unique_ptr<game::LevelWatcher> watcher = std::move(watcher_);
+  try {
+    load(played_.file);
+  } catch (const game::LevelError& error) {  // changed again since the watcher read it
+    std::fprintf(stderr, "%s\n(keeping the level as it was)\n", error.what());
+    watcher_ = std::move(watcher);
+    return;
+  }
+  played_.simulation->placePlayer(feet, yaw, pitch);
+  std::printf("reloaded %s: the rules start again, the player stays\n", played_.file.c_str());
+  std::fflush(stdout);
+}
+
+void Game::setFlying(bool flying) {
+  flying_ = flying;
+  played_.simulation->setAuthoring(flying);
+  if (flying && played_.recording) {
+    played_.recording.reset();
+    std::printf("recording stopped: the fly camera goes where a replay cannot\n");
+  }
+  std::printf("fly camera %s\n", flying ? "on: no gravity, collision, winning or losing" : "off");
+  std::fflush(stdout);
+  updateTitle(0.0);
+}
+
+void Game::copyView() {
+  const game::World& world = played_.simulation->world();
+  std::string text = game::cameraJson(world);
+  if (const std::optional<game::CrosshairTarget> target = game::crosshairTarget(world))
+    text += "\n" + game::positionJson(target->point);
+  glfwSetClipboardString(window_, text.c_str());
+  std::printf("copied to the clipboard:\n%s\n", text.c_str());
+  std::fflush(stdout);
 }
 
 void Game::setPaused(bool paused) {
@@ -178,6 +246,12 @@ void Game::handlePresses() {
         break;
       case KeyAction::AuthorOverlay:
         authorOverlay_ = !authorOverlay_;
+        break;
+      case KeyAction::FlyCamera:
+        setFlying(!flying_);
+        break;
+      case KeyAction::CopyView:
+        copyView();
         break;
       case KeyAction::Screenshot:
         screenshotRequested_ = true;

@@ -5,8 +5,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
+#include "game/level_watcher.hpp"
 #include "game/settings.hpp"
 #include "play/input.hpp"
 #include "play/level_flow.hpp"
@@ -21,10 +23,11 @@ namespace play {
 
 class Game {
  public:
-  // `levels`: the shipped levels in play order (the menu's list; a win moves on to the next).
+  // `levels`: the shipped levels in play order (the menu's list; a win moves on to the next);
+  // `chapters` parallel to it.
   Game(const PlayOptions& options, const game::Settings& settings,
-       std::vector<std::filesystem::path> levels, GLFWwindow* window,
-       const render::Context& context, render::ShaderCompiler& compiler,
+       std::vector<std::filesystem::path> levels, std::vector<std::string> chapters,
+       GLFWwindow* window, const render::Context& context, render::ShaderCompiler& compiler,
        render::Presenter& presenter);
 
   // Plays until the window closes or --quit-after-ticks; returns the exit status.
@@ -37,6 +40,11 @@ class Game {
   void handlePresses();
   void runTicks(double elapsed);
   void updateTitle(double fps);
+  void setFlying(bool flying);
+  void copyView();
+  // Saving the level (or a file it uses) reloads it in place: the player stays where they are
+  // and the rules start again. A save that does not load keeps the level as it was.
+  void reloadIfEdited(double now);
 
   const PlayOptions& options_;
   game::Settings settings_;       // as the menu changes them
@@ -55,8 +63,11 @@ class Game {
   bool startWasDown_ = false;
   PlayedLevel played_;
   bool paused_ = false;
-  bool authorOverlay_ = false;  // F3: raw probe values on screen and in the title
-  uint64_t ticksPlayed_ = 0;    // over all levels, for --quit-after-ticks
+  bool authorOverlay_ = false;                   // F3: raw probe values on screen and in the title
+  bool flying_ = false;                          // F4 or --author: the fly camera
+  std::unique_ptr<game::LevelWatcher> watcher_;  // the played level's files, for live reload
+  double watchedAt_ = 0.0;                       // when the watcher last looked
+  uint64_t ticksPlayed_ = 0;                     // over all levels, for --quit-after-ticks
   uint64_t framesShown_ = 0;
   double fps_ = 0.0;
   bool screenshotRequested_ = false;

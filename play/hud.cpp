@@ -7,7 +7,9 @@
 
 #include <imgui.h>
 
+#include "game/author_view.hpp"
 #include "play/level_flow.hpp"
+#include "play/level_list.hpp"
 #include "sim/simulation.hpp"
 
 namespace play {
@@ -48,6 +50,15 @@ void drawAuthorOverlay(const PlayedLevel& played) {
   if (ImGui::Begin("Probe values (F3)", nullptr, flags)) {
     ImGui::Text("tick %llu, %ux%u", static_cast<unsigned long long>(simulation.tick()),
                 played.renderWidth, played.renderHeight);
+    // What the crosshair is on, for placing things and naming them in rules.
+    if (const auto target = game::crosshairTarget(simulation.world())) {
+      for (const std::string& line :
+           game::describeCrosshair(*played.level, simulation.world(), *target))
+        ImGui::TextUnformatted(line.c_str());
+    } else {
+      ImGui::TextUnformatted("nothing under the crosshair");
+    }
+    ImGui::Separator();
     if (const auto& readings = simulation.latestReadings()) {
       ImGui::Text("readings of tick %llu", static_cast<unsigned long long>(readings->tick));
       for (size_t i = 0; i < readings->focusCoverage.size(); ++i)
@@ -146,6 +157,12 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   const float fpsWidth = ImGui::CalcTextSize(fpsText.c_str()).x;
   const ImVec2 topRight = at(1.0f, 0.07f);
   shadowedText(list, ImVec2(topRight.x - margin - fpsWidth, topRight.y), white, fpsText, size);
+  if (simulation.authoring()) {
+    const std::string flyText = "Fly camera (F4): no winning or losing";
+    const float flyWidth = ImGui::CalcTextSize(flyText.c_str()).x;
+    shadowedText(list, ImVec2(topRight.x - margin - flyWidth, topRight.y + size * 1.4f),
+                 colour(240, 228, 66), flyText, size);
+  }
 
   // On the bars hudRects() draws, so the two columns never run into each other: goals on the
   // left, exposure meters on the right.
@@ -192,9 +209,11 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   }
   const game::Outcome outcome = simulation.outcome();
   if (outcome != game::Outcome::Playing) {
-    const std::string text = outcome == game::Outcome::Won
-                                 ? "Level complete! The next level follows in a moment."
-                                 : "Lost: " + simulation.rules().reason() + ". Restarting.";
+    const std::string text =
+        outcome == game::Outcome::Won
+            ? wonText(simulation.tick(), played.bestBefore) +
+                  (played.campaignFinished ? "." : ". The next level follows in a moment.")
+            : "Lost: " + simulation.rules().reason() + ". Restarting.";
     const float big = size * 1.5f;
     const float width = ImGui::CalcTextSize(text.c_str()).x * 1.5f;
     const ImVec2 corner(picture.x + (picture.width - width) / 2, at(0, 0.3f).y);

@@ -67,6 +67,10 @@ KeyAction keyActionFor(const KeyCodes& keyCodes, int key) {
       return KeyAction::Vsync;
     case GLFW_KEY_F3:
       return KeyAction::AuthorOverlay;
+    case GLFW_KEY_F4:
+      return KeyAction::FlyCamera;
+    case GLFW_KEY_F6:
+      return KeyAction::CopyView;
     case GLFW_KEY_F12:
       return KeyAction::Screenshot;
     default:

@@ -34,7 +34,17 @@ int keyFor(const KeyCodes& keyCodes, const std::string& action);
 
 // What a key pressed while playing (or paused) does. The bound actions are checked first, so a
 // key bound to one of them no longer toggles vsync, the probe values or a screenshot.
-enum class KeyAction { None, Pause, Restart, Fullscreen, Vsync, AuthorOverlay, Screenshot };
+enum class KeyAction {
+  None,
+  Pause,
+  Restart,
+  Fullscreen,
+  Vsync,
+  AuthorOverlay,  // F3
+  FlyCamera,      // F4
+  CopyView,       // F6
+  Screenshot,
+};
 KeyAction keyActionFor(const KeyCodes& keyCodes, int key);
 
 // The settings screen waits for a key: binds `action` to it unless it is Escape (which keeps

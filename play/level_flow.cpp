@@ -57,16 +57,19 @@ void finishRecordingOf(PlayedLevel& played) {
   finishRecording(played.recording, *played.simulation, played.level->name);
 }
 
-// A won level unlocks the next one (progress.json); a failed save is said, not fatal.
-void saveWin(const fs::path& levelFile) {
+// A won level unlocks the next one and keeps its best time (progress.json); a failed save is
+// said, not fatal. Returns the best time before this win.
+std::optional<uint64_t> saveWin(const fs::path& levelFile, uint64_t ticks) {
   const fs::path file = game::progressFile();
   game::ProgressLoad loaded = game::loadProgress(file);
-  game::markWon(loaded.progress, levelFile.filename().string());
+  const std::optional<uint64_t> before =
+      game::markWon(loaded.progress, levelFile.filename().string(), ticks);
   try {
     game::saveProgress(loaded.progress, file);
   } catch (const std::exception& error) {
     std::fprintf(stderr, "progress not saved: %s\n", error.what());
   }
+  return before;
 }
 
 }  // namespace
@@ -94,6 +97,8 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   played.tickClock.reset();
   played.lastFrameAt = glfwGetTime();  // loading time is not play time
   played.outcomeAt = -1.0;
+  played.bestBefore.reset();
+  played.campaignFinished = false;
   if (played.outputWidth > 0) {
     std::printf("playing %s (%s) at %ux%u, upscaled to %ux%u\n", played.level->name.c_str(),
                 file.c_str(), played.renderWidth, played.renderHeight, played.outputWidth,
@@ -122,8 +127,10 @@ bool startNextLevel(PlayedLevel& played, const LevelSetup& setup) {
   if (current == setup.levels.end()) return restartLevel(played, setup);  // not shipped: again
   ++current;
   if (current == setup.levels.end()) {
-    std::printf("that was the last level; starting again from the first\n");
-    current = setup.levels.begin();
+    std::printf("that was the last level: the campaign is finished\n");
+    std::fflush(stdout);
+    played.campaignFinished = true;
+    return true;
   }
   startLevel(played, *current, setup);
   return true;
@@ -131,11 +138,12 @@ bool startNextLevel(PlayedLevel& played, const LevelSetup& setup) {
 
 bool advanceAfterOutcome(PlayedLevel& played, double now, const LevelSetup& setup) {
   const game::Outcome outcome = played.simulation->outcome();
-  if (outcome == game::Outcome::Playing) return false;
+  if (outcome == game::Outcome::Playing || played.campaignFinished) return false;
   if (played.outcomeAt < 0.0) {
     played.outcomeAt = now;
     finishRecordingOf(played);
-    if (outcome == game::Outcome::Won) saveWin(played.file);
+    if (outcome == game::Outcome::Won)
+      played.bestBefore = saveWin(played.file, played.simulation->tick());
     const game::Rules& rules = played.simulation->rules();
     std::printf("%s %s at tick %llu%s%s\n", outcome == game::Outcome::Won ? "won" : "lost",
                 played.level->name.c_str(),

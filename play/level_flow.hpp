@@ -31,6 +31,8 @@ struct PlayedLevel {
   game::TickClock tickClock;  // real time into ticks
   double lastFrameAt = 0.0;
   double outcomeAt = -1.0;                // when the level was won or lost; < 0 while playing
+  std::optional<uint64_t> bestBefore;     // won: the level's best time before this win
+  bool campaignFinished = false;          // the last shipped level was won: the end screen
   std::optional<game::Replay> recording;  // --record, until the first level's run ends
 };
 
@@ -55,11 +57,12 @@ void startLevel(PlayedLevel& played, const std::filesystem::path& file, const Le
 // that no longer loads keeps the one being played (and says why).
 bool restartLevel(PlayedLevel& played, const LevelSetup& setup);
 
-// Won: the next shipped level (after the last, the first); a level not shipped plays again.
+// Won: the next shipped level; after the last, the end screen (campaignFinished); a level not
+// shipped plays again.
 bool startNextLevel(PlayedLevel& played, const LevelSetup& setup);
 
-// Once the level is won or lost: ends the recording, saves a win and says so; a moment later,
-// won moves on to the next level and lost restarts this one.
+// Once the level is won or lost: ends the recording, saves a win (and its time) and says so; a
+// moment later, won moves on to the next level and lost restarts this one.
 bool advanceAfterOutcome(PlayedLevel& played, double now, const LevelSetup& setup);
 
 // Where a new session starts: the first shipped level not yet won (all won: the first).

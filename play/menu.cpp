@@ -18,8 +18,13 @@ namespace {
 
 void drawLevelList(Menu& menu, const fs::path& playedFile, const std::vector<fs::path>& levels) {
   const std::vector<LevelListEntry> entries =
-      levelListEntries(menu.progress, levels, menu.levelNames, playedFile);
+      levelListEntries(menu.progress, levels, menu.levelNames, menu.levelChapters, playedFile);
   for (size_t i = 0; i < entries.size(); ++i) {
+    if (!entries[i].chapter.empty()) {
+      if (i > 0) ImGui::Spacing();
+      ImGui::TextDisabled("%s", entries[i].chapter.c_str());
+      ImGui::Separator();
+    }
     ImGui::BeginDisabled(!entries[i].selectable);
     if (ImGui::Selectable(entries[i].label.c_str(), entries[i].current))
       menu.pendingLevel = levels[i];
@@ -141,6 +146,41 @@ void drawPauseMenu(Menu& menu, const PlayedLevel& played, const std::vector<fs::
     drawLevelList(menu, played.file, levels);
   if (ImGui::CollapsingHeader("Settings"))
     drawSettings(menu, played, settings, keyCodes, presenter);
+  ImGui::End();
+}
+
+void drawEndScreen(Menu& menu, const std::vector<fs::path>& levels) {
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(display.x / 2, display.y / 2), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_AlwaysAutoResize |
+                                 ImGuiWindowFlags_NoSavedSettings;
+  if (!ImGui::Begin("The end", nullptr, flags)) {
+    ImGui::End();
+    return;
+  }
+  ImGui::TextUnformatted("Every line of sight found. Thank you for playing Sightline.");
+  ImGui::Separator();
+  uint64_t total = 0;
+  bool everyTime = true;
+  for (size_t i = 0; i < levels.size(); ++i) {
+    const std::string file = levels[i].filename().string();
+    const auto best = menu.progress.bestTicks.find(file);
+    const std::string name = i < menu.levelNames.size() ? menu.levelNames[i] : file;
+    if (best == menu.progress.bestTicks.end()) {
+      everyTime = false;
+      ImGui::Text("%zu. %s", i + 1, name.c_str());
+      continue;
+    }
+    total += best->second;
+    ImGui::Text("%zu. %s   %s", i + 1, name.c_str(), game::gameTimeText(best->second).c_str());
+  }
+  ImGui::Separator();
+  if (everyTime) ImGui::Text("Best times together: %s", game::gameTimeText(total).c_str());
+  if (ImGui::Button("Play again from the first level")) menu.pendingLevel = levels.front();
+  ImGui::SameLine();
+  if (ImGui::Button("Quit")) menu.quitRequested = true;
   ImGui::End();
 }
 

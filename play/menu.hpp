@@ -20,9 +20,10 @@ namespace play {
 struct PlayedLevel;
 
 struct Menu {
-  std::vector<std::string> levelNames;   // of the shipped levels, for the list
-  game::Progress progress;               // read when the menu opens
-  std::optional<std::string> rebinding;  // the action waiting for its new key
+  std::vector<std::string> levelNames;     // of the shipped levels, for the list
+  std::vector<std::string> levelChapters;  // parallel to levelNames
+  game::Progress progress;                 // read when the menu opens
+  std::optional<std::string> rebinding;    // the action waiting for its new key
   bool confirmReset = false;
   // What the player chose; the game does it before the next frame, when no frame is built.
   std::optional<std::filesystem::path> pendingLevel;
@@ -43,6 +44,10 @@ void resetMenu(Menu& menu, bool opening);
 void drawPauseMenu(Menu& menu, const PlayedLevel& played,
                    const std::vector<std::filesystem::path>& levels, game::Settings& settings,
                    KeyCodes& keyCodes, render::Presenter& presenter);
+
+// Once the last level is won: the campaign's end, its best times, and what next (play again
+// from the first level, or quit). Between UiLayer's beginFrame and endFrame.
+void drawEndScreen(Menu& menu, const std::vector<std::filesystem::path>& levels);
 
 // Writes settings.json when the settings changed since `saved`; a failed save is said, not fatal.
 void saveSettingsIfChanged(const game::Settings& settings, game::Settings& saved);

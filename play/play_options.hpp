@@ -18,7 +18,8 @@ struct PlayOptions {
   bool upscale = true;
   std::optional<std::filesystem::path> record;   // write the first level's run as a replay
   std::optional<std::filesystem::path> capture;  // the last frame's window image (PNG)
-  game::LevelLoadOptions levelLoading;           // where "assets/" paths lead
+  bool author = false;                  // --author: the fly camera from the start (F4 toggles it)
+  game::LevelLoadOptions levelLoading;  // where "assets/" paths lead
 };
 
 }  // namespace play

@@ -73,7 +73,15 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
 }
 
 game::Outcome Simulation::outcome() const {
-  return rules_.outcome();
+  return authoring() ? game::Outcome::Playing : rules_.outcome();
+}
+
+void Simulation::setAuthoring(bool authoring) {
+  world_.setFlying(authoring);
+}
+
+void Simulation::placePlayer(const glm::vec3& feet, float yawDegrees, float pitchDegrees) {
+  world_.placePlayer(feet, yawDegrees, pitchDegrees);
 }
 
 void Simulation::syncRenderer() {

@@ -49,7 +49,14 @@ class Simulation {
   void step(const game::TickInput& input);
 
   uint64_t tick() const { return world_.tick(); }
+  // Playing while authoring: the rules still run, but neither win nor loss ends anything.
   game::Outcome outcome() const;
+
+  // Level authors' tools (play --author, F4, live reload): the fly camera, which also keeps the
+  // level from being won or lost, and putting the player where they were before a reload.
+  void setAuthoring(bool authoring);
+  bool authoring() const { return world_.flying(); }
+  void placePlayer(const glm::vec3& feet, float yawDegrees, float pitchDegrees);
   const game::World& world() const { return world_; }
   const game::Rules& rules() const { return rules_; }
   const game::Logic& logic() const { return logic_; }

@@ -4,10 +4,12 @@
 
 #include <string>
 
+#include "game/author_view.hpp"
 #include "game/level_loader.hpp"
 #include "game/logic.hpp"
 #include "game/probes.hpp"
 #include "game/rules.hpp"
+#include "game/solution_steps.hpp"
 #include "game/world.hpp"
 
 namespace {
@@ -232,6 +234,110 @@ TEST(LevelLogic, a_slide_condition_fires_when_the_player_pulls_the_slider_far_en
   EXPECT_NEAR(run.world.interactableValue(3), 40.0f / 60.0f, 1e-5f);
   ASSERT_EQ(run.logic.firings(0).size(), 1u);
   EXPECT_NEAR(double(run.logic.firings(0)[0]), 1.0 + 30.0, 1.0);  // at 0.5 m, 30 ticks in
+}
+
+// ----- what a run's steps are (game/solution_steps.hpp) -----
+
+TEST(SolutionSteps, interactables_changed_and_rules_that_change_the_world_count_once_each) {
+  const game::Level level = levelWithRules(R"({
+    "greet": { "when": { "type": "timer", "seconds": 0 },
+               "then": [{ "do": "hide", "entity": "door" }, { "do": "show", "entity": "door" }] },
+    "lamp_on": { "when": { "type": "switch", "entity": "lever" },
+                 "then": [{ "do": "play", "mover": "door" }] },
+    "pulled": { "when": { "type": "slide", "entity": "shade", "min": 0.5, "max": 2 },
+                "then": [{ "do": "message", "text": "pulled" }] },
+    "won": { "when": { "type": "slide", "entity": "shade", "min": 0.6, "max": 2 },
+             "then": [{ "do": "lock", "entity": "shade" }, { "do": "win" }] } })");
+  LogicRun run(level);
+  game::SolutionSteps steps(level, run.world);
+  auto step = [&](const game::PlayerInput& input) {
+    run.step(input);
+    steps.observe(run.world, run.logic);
+  };
+  game::PlayerInput press;
+  press.interact = true;  // the lever is 1 m ahead of the eye
+  step(press);
+  step({});
+  step(press);  // switched back off: still the one step
+  step({});
+  run.world.respawnPlayer({5, 0, 2.5}, 0);
+  game::PlayerInput look;
+  look.pitchDeltaDegrees = -25.0f;
+  step(look);
+  game::PlayerInput pull;
+  pull.interact = true;
+  pull.adjust = 1.0f;
+  for (int tick = 0; tick < 40; ++tick) step(pull);
+  ASSERT_FALSE(run.logic.firings(0).empty());  // the timer rule fired, on tick 1
+  ASSERT_FALSE(run.logic.firings(2).empty());  // the message-only rule fired
+  ASSERT_FALSE(run.logic.firings(3).empty());  // the winning rule fired
+  std::vector<std::string> what;
+  for (const game::SolutionStep& s : steps.steps()) what.push_back(s.what);
+  EXPECT_EQ(what, (std::vector<std::string>{"switch lever", "rule lamp_on", "slide shade"}));
+  EXPECT_EQ(steps.steps()[0].tick, 1u);
+  EXPECT_EQ(steps.steps()[1].tick, 1u);
+  EXPECT_EQ(steps.steps()[2].tick, 6u);  // the first tick of pulling
+}
+
+// ----- the authors' tools (game/author_view.hpp, the fly camera) -----
+
+const std::string kQuietLogic = R"({
+    "later": { "when": { "type": "timer", "seconds": 100 }, "then": [{ "do": "message", "text": "x" }] } })";
+
+TEST(AuthorView, the_crosshair_names_the_entity_its_material_the_point_and_its_state) {
+  const game::Level level = levelWithRules(kQuietLogic);
+  game::World world(level);
+  // The lever's near face is 1 m in front of the eye (0, 1.65, 8).
+  const auto lever = game::crosshairTarget(world);
+  ASSERT_TRUE(lever);
+  EXPECT_EQ(game::describeCrosshair(level, world, *lever),
+            (std::vector<std::string>{"entity lever, material paint",
+                                      "at [0.00, 1.65, 7.00], 1.00 m", "switch off"}));
+  // Past the lever, 4 degrees down meets the door's face (its top is 1 m high) at z = -4.5.
+  world.placePlayer({0, 0, 5}, 0, -4);
+  const auto door = game::crosshairTarget(world);
+  ASSERT_TRUE(door);
+  EXPECT_EQ(level.entities[door->entity].id, "door");
+  EXPECT_NEAR(door->distance, 9.5f / std::cos(glm::radians(4.0f)), 1e-3f);
+  EXPECT_NEAR(door->point.y, 1.65f - 9.5f * std::tan(glm::radians(4.0f)), 1e-3f);
+  EXPECT_EQ(game::describeCrosshair(level, world, *door).size(), 2u);  // not an interactable
+  world.placePlayer({5, 0, 2.5}, 0, -25);
+  const auto shade = game::crosshairTarget(world);
+  ASSERT_TRUE(shade);
+  EXPECT_EQ(game::describeCrosshair(level, world, *shade).back(), "slide 0.00 m of 0..2");
+  world.placePlayer({0, 0, 8}, 0, 30);  // the sky
+  EXPECT_FALSE(game::crosshairTarget(world));
+}
+
+TEST(AuthorView, the_view_and_the_point_copy_as_level_json) {
+  const game::Level level = levelWithRules(kQuietLogic);
+  game::World world(level);
+  world.placePlayer({1.25f, 0, -3}, 90, -12.5f);
+  EXPECT_EQ(game::cameraJson(world),
+            "\"camera\": { \"position\": [1.25, 1.65, -3.00], \"yaw_degrees\": 90.00, "
+            "\"pitch_degrees\": -12.50, \"fov_degrees\": 60.00 }");
+  EXPECT_EQ(game::positionJson({0.004f, -0.001f, 2.5f}), "\"position\": [0.00, 0.00, 2.50]");
+}
+
+TEST(AuthorView, the_fly_camera_goes_through_walls_without_gravity_and_jump_rises) {
+  const game::Level level = levelWithRules(kQuietLogic);
+  game::World world(level);
+  world.setFlying(true);
+  game::PlayerInput forward;
+  forward.move = {0, 1};
+  for (int tick = 0; tick < 60; ++tick) world.step(forward);  // through the lever at z 6..7
+  EXPECT_NEAR(world.feetPosition().z, 8.0f - 4.0f * game::PlayerController::FLY_SPEED_FACTOR,
+              1e-4f);
+  EXPECT_EQ(world.feetPosition().y, 0.0f);
+  game::PlayerInput rise;
+  rise.jump = true;
+  for (int tick = 0; tick < 30; ++tick) world.step(rise);
+  EXPECT_NEAR(world.feetPosition().y, 4.0f, 1e-4f);
+  for (int tick = 0; tick < 30; ++tick) world.step({});  // no gravity
+  EXPECT_NEAR(world.feetPosition().y, 4.0f, 1e-4f);
+  world.setFlying(false);
+  for (int tick = 0; tick < 120; ++tick) world.step({});  // walking again: falls to the floor
+  EXPECT_NEAR(world.feetPosition().y, 0.0f, 1e-3f);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Settings, progress, the level order file and where the player's files live.
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -229,10 +230,14 @@ TEST_F(SettingsFile, a_directory_in_its_place_gives_the_defaults_and_a_message) 
 
 TEST_F(ProgressFile, round_trips) {
   game::Progress progress;
-  game::markWon(progress, "02_penumbra.json");
-  game::markWon(progress, "01_first_light.json");
-  game::markWon(progress, "01_first_light.json");  // winning twice changes nothing
+  EXPECT_EQ(game::markWon(progress, "02_penumbra.json", 300), std::nullopt);
+  EXPECT_EQ(game::markWon(progress, "01_first_light.json", 200), std::nullopt);
+  // Winning again keeps the level completed and the fewer ticks as its best.
+  EXPECT_EQ(game::markWon(progress, "01_first_light.json", 250), std::optional<uint64_t>(200));
+  EXPECT_EQ(game::markWon(progress, "02_penumbra.json", 280), std::optional<uint64_t>(300));
   EXPECT_EQ(progress.completed.size(), 2u);
+  EXPECT_EQ(progress.bestTicks, (std::map<std::string, uint64_t>{{"01_first_light.json", 200},
+                                                                 {"02_penumbra.json", 280}}));
   const fs::path file = root_ / "data" / "progress.json";
   game::saveProgress(progress, file);
   EXPECT_EQ(readFile(file), R"({
@@ -240,7 +245,11 @@ TEST_F(ProgressFile, round_trips) {
   "completed": [
     "01_first_light.json",
     "02_penumbra.json"
-  ]
+  ],
+  "best_ticks": {
+    "01_first_light.json": 200,
+    "02_penumbra.json": 280
+  }
 }
 )");
   const game::ProgressLoad load = game::loadProgress(file);
@@ -274,18 +283,44 @@ TEST_F(ProgressFile, bad_entries_are_skipped_and_the_others_kept) {
                 file.string() + ":2:60: /completed/2" + bad + "3; ignored"}));
 }
 
+TEST_F(ProgressFile, bad_best_times_are_skipped_and_the_others_kept) {
+  const fs::path file = root_ / "progress.json";
+  test::writeFile(file, R"({ "progress": 1, "completed": ["a.json"],
+  "best_ticks": { "a.json": 120, "b/c.json": 5, "d.json": -3, "e.json": 0, "f.json": 61 } })");
+  const game::ProgressLoad load = game::loadProgress(file);
+  EXPECT_EQ(load.progress.bestTicks,
+            (std::map<std::string, uint64_t>{{"a.json", 120}, {"f.json", 61}}));
+  const std::string bad = ": expected a level file name with a tick count above 0, got ";
+  EXPECT_EQ(load.messages, (std::vector<std::string>{
+                               file.string() + ":2:46: /best_ticks/b~1c.json" + bad + "5; ignored",
+                               file.string() + ":2:59: /best_ticks/d.json" + bad + "-3; ignored",
+                               file.string() + ":2:73: /best_ticks/e.json" + bad + "0; ignored"}));
+  test::writeFile(file, R"({ "progress": 1, "best_ticks": [1] })");
+  EXPECT_EQ(game::loadProgress(file).messages,
+            (std::vector<std::string>{
+                file.string() +
+                ":1:32: /best_ticks: expected an object of level file names and tick counts, got "
+                "[1]; no best times kept"}));
+}
+
+TEST(Progress, game_time_is_ticks_at_sixty_a_second) {
+  EXPECT_EQ(game::gameTimeText(0), "0.0 s");
+  EXPECT_EQ(game::gameTimeText(2538), "42.3 s");
+  EXPECT_EQ(game::gameTimeText(60 * 125), "125.0 s");
+}
+
 TEST(Progress, the_first_level_and_those_after_a_completed_one_are_unlocked) {
   const std::vector<std::string> order = {"a.json", "b.json", "c.json"};
   game::Progress progress;
   EXPECT_TRUE(game::unlocked(progress, order, "a.json"));
   EXPECT_FALSE(game::unlocked(progress, order, "b.json"));
   EXPECT_FALSE(game::unlocked(progress, order, "c.json"));
-  game::markWon(progress, "a.json");
+  game::markWon(progress, "a.json", 100);
   EXPECT_TRUE(game::unlocked(progress, order, "b.json"));
   EXPECT_FALSE(game::unlocked(progress, order, "c.json"));
   // Winning a later level (from the command line) unlocks only the one after it.
   game::Progress skipped;
-  game::markWon(skipped, "b.json");
+  game::markWon(skipped, "b.json", 100);
   EXPECT_FALSE(game::unlocked(skipped, order, "b.json"));
   EXPECT_TRUE(game::unlocked(skipped, order, "c.json"));
   EXPECT_FALSE(game::unlocked(progress, order, "not_in_the_order.json"));
@@ -453,6 +488,23 @@ TEST_F(LevelOrderFile, each_error_names_the_line) {
   EXPECT_EQ(errorFor("..\n"), orderFile() + ":1: \"..\" is a path; list level file names only");
   EXPECT_EQ(errorFor("notes.txt\n"), orderFile() + ":1: \"notes.txt\" is not a .json level file");
   EXPECT_EQ(errorFor("# nothing yet\n\n"), orderFile() + ": lists no levels");
+}
+
+TEST_F(LevelOrderFile, chapters_hold_the_levels_below_them) {
+  test::writeFile(
+      levels() / "order.txt",
+      "one.json\nchapter: Glass  # the second\ntwo.json\n\nchapter:Mirrors\nthree.json\n");
+  EXPECT_EQ(game::loadCampaign(levels()),
+            (std::vector<game::OrderedLevel>{
+                {"one.json", ""}, {"two.json", "Glass"}, {"three.json", "Mirrors"}}));
+  EXPECT_EQ(errorFor("chapter:\none.json\n"),
+            orderFile() + ":1: a chapter needs a name, as in \"chapter: Mirrors\"");
+  EXPECT_EQ(errorFor("chapter: A\none.json\nchapter: A\ntwo.json\n"),
+            orderFile() + ":3: chapter \"A\" is named twice (first on line 1)");
+  EXPECT_EQ(errorFor("chapter: A\nchapter: B\none.json\n"),
+            orderFile() + ":1: chapter \"A\" lists no levels");
+  EXPECT_EQ(errorFor("chapter: A\none.json\nchapter: B\n# nothing\n"),
+            orderFile() + ":3: chapter \"B\" lists no levels");
 }
 
 TEST_F(LevelOrderFile, a_missing_file_is_an_error) {
