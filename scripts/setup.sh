@@ -9,7 +9,7 @@ packages=(
   glslang-dev glslang-tools spirv-tools
   libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
   libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core libembree-dev
-  xvfb xauth
+  xvfb xauth xdotool
   clang libclang-rt-14-dev python3 python3-jsonschema
 )
 # Mesa >= 24.1 is the first lavapipe with ray tracing; bookworm has 22.3, backports 25.x.
