@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/commands.hpp"
@@ -33,6 +34,51 @@ struct LevelRuns {
   const ReplayResult* win = nullptr;  // the first passing replay that expects a win
   bool hasFail = false;               // a passing replay that expects a loss or neither
 };
+
+// The names the level format gives each action and interactable kind (docs/LEVELS.md).
+const std::vector<std::pair<game::Action::Type, const char*>> kActionNames{
+    {game::Action::Type::Play, "play"},
+    {game::Action::Type::Reverse, "reverse"},
+    {game::Action::Type::Stop, "stop"},
+    {game::Action::Type::Goto, "goto"},
+    {game::Action::Type::LightOn, "light_on"},
+    {game::Action::Type::LightOff, "light_off"},
+    {game::Action::Type::LightToggle, "light_toggle"},
+    {game::Action::Type::Show, "show"},
+    {game::Action::Type::Hide, "hide"},
+    {game::Action::Type::Lock, "lock"},
+    {game::Action::Type::Unlock, "unlock"},
+    {game::Action::Type::SetRespawn, "set_respawn"},
+    {game::Action::Type::Message, "message"},
+    {game::Action::Type::Win, "win"},
+    {game::Action::Type::Lose, "lose"}};
+const std::vector<std::pair<game::Interactable::Type, const char*>> kInteractableNames{
+    {game::Interactable::Type::Rotate, "rotate"},
+    {game::Interactable::Type::Slide, "slide"},
+    {game::Interactable::Type::Switch, "switch"}};
+
+// What no level of the campaign uses: every interactable kind and rule action must appear.
+std::vector<std::string> unusedKinds(const std::vector<const game::Level*>& levels) {
+  std::vector<std::string> unused;
+  for (const auto& [type, name] : kInteractableNames) {
+    const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
+      return std::any_of(
+          level->entities.begin(), level->entities.end(),
+          [&](const game::Entity& e) { return e.interactable && e.interactable->type == type; });
+    });
+    if (!used) unused.push_back(std::string("interactable ") + name);
+  }
+  for (const auto& [type, name] : kActionNames) {
+    const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
+      return std::any_of(level->rules.begin(), level->rules.end(), [&](const game::Rule& rule) {
+        return std::any_of(rule.actions.begin(), rule.actions.end(),
+                           [&](const game::Action& action) { return action.type == type; });
+      });
+    });
+    if (!used) unused.push_back(std::string("action ") + name);
+  }
+  return unused;
+}
 
 std::string stepsText(const std::vector<game::SolutionStep>& steps) {
   std::string text;
@@ -117,6 +163,11 @@ int commandCampaign(const Options& options) {
       "win fires a rule (at least %zu), median win %.1f s (at least %.0f s)\n",
       runs.size(), kMinLevels, puzzles, kMinStepsForAPuzzle, kMinPuzzles, withRules,
       kMinLevelsWithRules, medianSeconds, kMinMedianWinSeconds);
+  std::vector<const game::Level*> loaded;
+  for (const std::vector<game::Level>& replayed : levels)
+    if (!replayed.empty()) loaded.push_back(&replayed.front());
+  for (const std::string& kind : unusedKinds(loaded))
+    problems.push_back("no level uses the " + kind);
   if (runs.size() < kMinLevels) problems.push_back("too few levels");
   if (puzzles < kMinPuzzles) problems.push_back("too few levels of three or more steps");
   if (withRules < kMinLevelsWithRules) problems.push_back("too few levels whose win fires a rule");
