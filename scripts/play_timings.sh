@@ -17,7 +17,7 @@ while [ $# -gt 0 ]; do
 done
 levels=("$@")
 [ ${#levels[@]} -gt 0 ] ||
-  mapfile -t levels < <(sed 's/#.*//; s/[[:space:]]//g; /^$/d; s|^|levels/|' levels/order.txt)
+  mapfile -t levels < <(sed 's/#.*//; /^[[:space:]]*chapter:/d; s/[[:space:]]//g; /^$/d; s|^|levels/|' levels/order.txt)
 home=$(mktemp -d)  # no saved settings or progress
 trap 'rm -rf "$home"' EXIT
 for level in "${levels[@]}"; do

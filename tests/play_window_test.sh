@@ -80,6 +80,6 @@ echo '{"settings": 1, "vsync": false}' >"$XDG_CONFIG_HOME/sightline/settings.jso
 env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
   "$sightline" play --validate --quit-after-ticks 5 >"$log" 2>&1 || { cat "$log"; fail "second run failed"; }
 cat "$log"
-grep -q "^playing Penumbra " "$log" || fail "with level 1 won, play did not start at level 2"
+grep -q "^playing Glass and Mirrors " "$log" || fail "with level 1 won, play did not start at the second level of levels/order.txt"
 grep -q "^window: .* FIFO," "$log" && fail "vsync off in the settings, but the swapchain is FIFO"
 echo "PASS"
