@@ -2,6 +2,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "game/world.hpp"
+
 namespace game {
 
 glm::mat4 entityTransform(const Entity& entity) {
@@ -34,17 +36,21 @@ scene::SceneDesc buildSceneDesc(const Level& level) {
   scene.meshes = level.meshes;
   scene.materials = level.materials;
   scene.textures = level.textures;
-  scene.lights = level.lights;  // with enabled, radius, size and angular diameter
+  // As the level starts: interactables at their start values, movers at time 0, switches'
+  // lights as the switches start (the world's poses; the game's first frame is the same).
+  const World world(level);
+  scene.lights = world.lights();  // with enabled, radius, size and angular diameter
   scene.environment = level.environment;
   scene.maxMirrorBounces = level.maxMirrorBounces;
   scene.lightViaMirrors = level.lightViaMirrors;
   scene.instances.reserve(level.entities.size());
-  for (const Entity& entity : level.entities) {
+  for (uint32_t e = 0; e < level.entities.size(); ++e) {
+    const Entity& entity = level.entities[e];
     scene::InstanceDesc instance;
     instance.mesh = entity.mesh;
     instance.material = entity.material;
     instance.meshMaterials = entity.meshMaterials;
-    instance.objectToWorld = entityTransform(entity);
+    instance.objectToWorld = world.entityTransform(e);
     instance.castsShadow = entity.castsShadow;
     scene.instances.push_back(std::move(instance));
   }
