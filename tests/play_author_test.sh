@@ -8,24 +8,25 @@ set -uo pipefail
 sightline=$1
 level=$2
 
-for tool in Xvfb xdotool; do
+for tool in xvfb-run xauth xdotool; do
   if ! command -v "$tool" >/dev/null; then
-    echo "FAIL: $tool is not installed (scripts/setup.sh installs xvfb and xdotool)"
+    echo "FAIL: $tool is not installed (scripts/setup.sh installs xvfb, xauth and xdotool)"
     exit 1
   fi
 done
+# A display of its own, which xvfb-run starts (and waits for) before running this script again.
+if [ -z "${PLAY_AUTHOR_TEST_DISPLAY:-}" ]; then
+  PLAY_AUTHOR_TEST_DISPLAY=1 exec env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 640x480x24" \
+    bash "$0" "$@"
+fi
 
 work=$(mktemp -d)
 export XDG_CONFIG_HOME=$work/config XDG_DATA_HOME=$work/data
 cp "$level" "$work/level.json"
 log=$work/log
-# A display of its own; a small picture so that game time keeps up with real time.
-display=:$((90 + RANDOM % 400))
-Xvfb "$display" -screen 0 640x480x24 >/dev/null 2>&1 &
-xvfb=$!
-trap 'kill "$game" "$xvfb" 2>/dev/null; rm -rf "$work"' EXIT
-export DISPLAY=$display
-env -u WAYLAND_DISPLAY "$sightline" play "$work/level.json" --author --validate --size 32x18 \
+# A small picture, so that game time keeps up with real time.
+trap 'kill "$game" 2>/dev/null; rm -rf "$work"' EXIT
+"$sightline" play "$work/level.json" --author --validate --size 32x18 \
   --window 160x90 --no-upscale --quit-after-ticks 900 >"$log" 2>&1 &
 game=$!
 
