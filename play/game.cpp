@@ -204,7 +204,8 @@ void Game::setPaused(bool paused) {
   paused_ = paused;
   resetMenu(menu_, paused);
   if (!paused) saveSettingsIfChanged(settings_, savedSettings_);
-  setMouseCaptured(window_, look_, !paused);
+  setMouseCaptured(window_, look_,
+                   !paused && !played_.campaignFinished);  // the end screen has buttons
   updateTitle(0.0);
 }
 
