@@ -60,7 +60,9 @@ const std::vector<std::pair<game::Interactable::Type, const char*>> kInteractabl
 // What no level of the campaign uses: every interactable kind and rule action must appear.
 std::vector<std::string> unusedKinds(const std::vector<const game::Level*>& levels) {
   std::vector<std::string> unused;
-  for (const auto& [type, name] : kInteractableNames) {
+  for (const auto& entry : kInteractableNames) {
+    const game::Interactable::Type type = entry.first;  // a plain variable: lambdas capture it
+    const char* name = entry.second;
     const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
       return std::any_of(
           level->entities.begin(), level->entities.end(),
@@ -68,7 +70,9 @@ std::vector<std::string> unusedKinds(const std::vector<const game::Level*>& leve
     });
     if (!used) unused.push_back(std::string("interactable ") + name);
   }
-  for (const auto& [type, name] : kActionNames) {
+  for (const auto& entry : kActionNames) {
+    const game::Action::Type type = entry.first;
+    const char* name = entry.second;
     const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
       return std::any_of(level->rules.begin(), level->rules.end(), [&](const game::Rule& rule) {
         return std::any_of(rule.actions.begin(), rule.actions.end(),

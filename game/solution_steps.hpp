@@ -16,7 +16,7 @@ namespace game {
 struct SolutionStep {
   uint64_t tick = 0;  // when it first happened
   std::string what;   // "turn mirror", "slide red_pane", "switch lever", "rule gate_open",
-                      // "reach goal 1"
+                      // "reach goal box 1"
 };
 
 class SolutionSteps {

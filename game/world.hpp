@@ -34,7 +34,7 @@ class World {
   size_t entityCount() const { return entities_.size(); }
   const glm::mat4& entityTransform(uint32_t entity) const { return collision_.transform(entity); }
   // Entities whose transform changed in the last step, ascending (after construction: every
-  // mover and interactable, whose pose may differ from buildSceneDesc's).
+  // mover and interactable, placed at their start poses).
   const std::vector<uint32_t>& changedEntities() const { return changed_; }
   // A Rotate's angle in degrees or a Slide's offset in metres (0 for other entities).
   float interactableValue(uint32_t entity) const { return values_[entity]; }

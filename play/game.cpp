@@ -74,12 +74,11 @@ int Game::run(const fs::path& firstLevel) {
       runTicks(elapsed);
       quitting = options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks;
       if (!quitting && advanceAfterOutcome(played_, now, levelSetup())) {
-        updateTitle(0.0);
-        if (played_.campaignFinished) {  // the end screen wants the mouse
-          resetMenu(menu_, true);
-          setMouseCaptured(window_, look_, false);
-        }
+        if (played_.campaignFinished) resetMenu(menu_, true);  // the end screen's best times
+        levelStarted();
       }
+      // A scripted run that reaches the end screen ends there (no tick passes on it).
+      quitting = quitting || (options_.quitAfterTicks != 0 && played_.campaignFinished);
       reloadIfEdited(now);
     }
     if (quitting && options_.capture) presenter_.captureNextPresent();
@@ -142,11 +141,32 @@ LevelSetup Game::levelSetup() const {
 
 void Game::load(const fs::path& file) {
   startLevel(played_, file, levelSetup());
+  levelStarted();
+}
+
+void Game::levelStarted() {
   played_.simulation->setAuthoring(flying_);
-  watcher_ = std::make_unique<game::LevelWatcher>(file, options_.levelLoading);
-  watcher_->poll();  // the files the level is made of, as they are now
+  if (flying_) played_.timed = false;
+  if (!watcher_ || watchedFile_ != played_.file) {
+    watcher_ = std::make_unique<game::LevelWatcher>(played_.file, options_.levelLoading);
+    watcher_->poll();  // the files the level is made of, as they are now
+    watchedFile_ = played_.file;
+  }
   watchedAt_ = played_.lastFrameAt;
+  if (!paused_) setMouseCaptured(window_, look_, !played_.campaignFinished);
   updateTitle(0.0);
+}
+
+void Game::restartInPlace(const char* why) {
+  const game::World& world = played_.simulation->world();
+  const glm::vec3 feet = world.feetPosition();
+  const float yaw = world.yawDegrees(), pitch = world.pitchDegrees();
+  if (!restartLevel(played_, levelSetup())) return;  // it said why
+  levelStarted();
+  played_.simulation->placePlayer(feet, yaw, pitch);
+  played_.timed = false;  // the run did not start at the spawn point
+  std::printf("%s: the rules start again, the player stays\n", why);
+  std::fflush(stdout);
 }
 
 void Game::reloadIfEdited(double now) {
@@ -162,31 +182,22 @@ void Game::reloadIfEdited(double now) {
     case game::LevelWatcher::Event::Reloaded:
       break;
   }
-  const game::World& world = played_.simulation->world();
-  const glm::vec3 feet = world.feetPosition();
-  const float yaw = world.yawDegrees(), pitch = world.pitchDegrees();
-  std::unique_ptr<game::LevelWatcher> watcher = std::move(watcher_);
-  try {
-    load(played_.file);
-  } catch (const game::LevelError& error) {  // changed again since the watcher read it
-    std::fprintf(stderr, "%s\n(keeping the level as it was)\n", error.what());
-    watcher_ = std::move(watcher);
-    return;
-  }
-  played_.simulation->placePlayer(feet, yaw, pitch);
-  std::printf("reloaded %s: the rules start again, the player stays\n", played_.file.c_str());
-  std::fflush(stdout);
+  restartInPlace(("reloaded " + played_.file.string()).c_str());
 }
 
 void Game::setFlying(bool flying) {
   flying_ = flying;
   played_.simulation->setAuthoring(flying);
+  if (flying) played_.timed = false;
   if (flying && played_.recording) {
     played_.recording.reset();
     std::printf("recording stopped: the fly camera goes where a replay cannot\n");
   }
   std::printf("fly camera %s\n", flying ? "on: no gravity, collision, winning or losing" : "off");
   std::fflush(stdout);
+  // What the rules decided while it flew is not played out: they start again where it is.
+  if (!flying && played_.simulation->rulesOutcome() != game::Outcome::Playing)
+    restartInPlace("fly camera off");
   updateTitle(0.0);
 }
 
@@ -237,7 +248,7 @@ void Game::handlePresses() {
         setPaused(!paused_);
         break;
       case KeyAction::Restart:
-        if (restartLevel(played_, levelSetup())) updateTitle(0.0);
+        if (restartLevel(played_, levelSetup())) levelStarted();
         break;
       case KeyAction::Fullscreen:
         toggleFullscreen(window_, windowed_);

@@ -41,6 +41,11 @@ class Game {
   void runTicks(double elapsed);
   void updateTitle(double fps);
   void setFlying(bool flying);
+  // After any level start (load, F5, a loss's restart, a win's next level): the fly camera, the
+  // live-reload watcher and the mouse follow the new level.
+  void levelStarted();
+  // Starts the played level again from its file, keeping the player where they are.
+  void restartInPlace(const char* why);
   void copyView();
   // Saving the level (or a file it uses) reloads it in place: the player stays where they are
   // and the rules start again. A save that does not load keeps the level as it was.
@@ -66,6 +71,7 @@ class Game {
   bool authorOverlay_ = false;                   // F3: raw probe values on screen and in the title
   bool flying_ = false;                          // F4 or --author: the fly camera
   std::unique_ptr<game::LevelWatcher> watcher_;  // the played level's files, for live reload
+  std::filesystem::path watchedFile_;            // the level the watcher watches
   double watchedAt_ = 0.0;                       // when the watcher last looked
   uint64_t ticksPlayed_ = 0;                     // over all levels, for --quit-after-ticks
   uint64_t framesShown_ = 0;

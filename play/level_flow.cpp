@@ -99,6 +99,7 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   played.outcomeAt = -1.0;
   played.bestBefore.reset();
   played.campaignFinished = false;
+  played.timed = true;
   if (played.outputWidth > 0) {
     std::printf("playing %s (%s) at %ux%u, upscaled to %ux%u\n", played.level->name.c_str(),
                 file.c_str(), played.renderWidth, played.renderHeight, played.outputWidth,
@@ -143,7 +144,7 @@ bool advanceAfterOutcome(PlayedLevel& played, double now, const LevelSetup& setu
     played.outcomeAt = now;
     finishRecordingOf(played);
     if (outcome == game::Outcome::Won)
-      played.bestBefore = saveWin(played.file, played.simulation->tick());
+      played.bestBefore = saveWin(played.file, played.timed ? played.simulation->tick() : 0);
     const game::Rules& rules = played.simulation->rules();
     std::printf("%s %s at tick %llu%s%s\n", outcome == game::Outcome::Won ? "won" : "lost",
                 played.level->name.c_str(),

@@ -30,9 +30,12 @@ struct PlayedLevel {
   float activeScale = 0.0f;
   game::TickClock tickClock;  // real time into ticks
   double lastFrameAt = 0.0;
-  double outcomeAt = -1.0;                // when the level was won or lost; < 0 while playing
-  std::optional<uint64_t> bestBefore;     // won: the level's best time before this win
-  bool campaignFinished = false;          // the last shipped level was won: the end screen
+  double outcomeAt = -1.0;             // when the level was won or lost; < 0 while playing
+  std::optional<uint64_t> bestBefore;  // won: the level's best time before this win
+  bool campaignFinished = false;       // the last shipped level was won: the end screen
+  // False once the fly camera was used or the level was reloaded in place: a win then saves no
+  // best time.
+  bool timed = true;
   std::optional<game::Replay> recording;  // --record, until the first level's run ends
 };
 

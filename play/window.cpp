@@ -43,7 +43,7 @@ void showTitle(GLFWwindow* window, const game::Level& level, const sim::Simulati
   }
   switch (simulation.outcome()) {
     case game::Outcome::Won:
-      title += " | Won! Next level in a moment";
+      title += " | Won!";
       break;
     case game::Outcome::Lost:
       title += " | Lost (" + simulation.rules().reason() + "); restarting";

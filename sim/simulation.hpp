@@ -49,8 +49,10 @@ class Simulation {
   void step(const game::TickInput& input);
 
   uint64_t tick() const { return world_.tick(); }
-  // Playing while authoring: the rules still run, but neither win nor loss ends anything.
+  // Playing while authoring (the fly camera): the rules still run and may decide, but the
+  // decision is held back; rulesOutcome() is what they decided.
   game::Outcome outcome() const;
+  game::Outcome rulesOutcome() const { return rules_.outcome(); }
 
   // Level authors' tools (play --author, F4, live reload): the fly camera, which also keeps the
   // level from being won or lost, and putting the player where they were before a reload.

@@ -27,7 +27,7 @@ log=$work/log
 # A small picture, so that game time keeps up with real time.
 trap 'kill "$game" 2>/dev/null; rm -rf "$work"' EXIT
 "$sightline" play "$work/level.json" --author --validate --size 32x18 \
-  --window 160x90 --no-upscale --quit-after-ticks 900 >"$log" 2>&1 &
+  --window 160x90 --no-upscale --quit-after-ticks 1500 >"$log" 2>&1 &
 game=$!
 
 fail() {
@@ -83,6 +83,7 @@ for _ in $(seq 100); do
   [ "$(grep -c '^"camera": ' "$log")" -ge 2 ] && break
   sleep 0.1
 done
+[ "$(grep -c '^"camera": ' "$log")" -ge 2 ] || fail "F6 after the reload printed no camera block"
 after=$(grep '^"camera": ' "$log" | tail -1)
 [ "$after" = "$before" ] || fail "the reload moved the player: before $before, after $after"
 wait "$game"
