@@ -35,52 +35,27 @@ struct LevelRuns {
   bool hasFail = false;               // a passing replay that expects a loss or neither
 };
 
-// The names the level format gives each action and interactable kind (docs/LEVELS.md).
-const std::vector<std::pair<game::Action::Type, const char*>> kActionNames{
-    {game::Action::Type::Play, "play"},
-    {game::Action::Type::Reverse, "reverse"},
-    {game::Action::Type::Stop, "stop"},
-    {game::Action::Type::Goto, "goto"},
-    {game::Action::Type::LightOn, "light_on"},
-    {game::Action::Type::LightOff, "light_off"},
-    {game::Action::Type::LightToggle, "light_toggle"},
-    {game::Action::Type::Show, "show"},
-    {game::Action::Type::Hide, "hide"},
-    {game::Action::Type::Lock, "lock"},
-    {game::Action::Type::Unlock, "unlock"},
-    {game::Action::Type::SetRespawn, "set_respawn"},
-    {game::Action::Type::Message, "message"},
-    {game::Action::Type::Win, "win"},
-    {game::Action::Type::Lose, "lose"}};
-const std::vector<std::pair<game::Interactable::Type, const char*>> kInteractableNames{
-    {game::Interactable::Type::Rotate, "rotate"},
-    {game::Interactable::Type::Slide, "slide"},
-    {game::Interactable::Type::Switch, "switch"}};
-
 // What no level of the campaign uses: every interactable kind and rule action must appear.
 std::vector<std::string> unusedKinds(const std::vector<const game::Level*>& levels) {
+  std::set<std::string> used;
+  for (const game::Level* level : levels) {
+    for (const game::Entity& entity : level->entities)
+      if (entity.interactable)
+        used.insert(std::string("interactable ") +
+                    game::interactableName(entity.interactable->type));
+    for (const game::Rule& rule : level->rules)
+      for (const game::Action& action : rule.actions)
+        used.insert(std::string("action ") + game::actionName(action.type));
+  }
+  std::vector<std::string> every;
+  for (int type = 0; type <= int(game::Interactable::Type::Switch); ++type)
+    every.push_back(std::string("interactable ") +
+                    game::interactableName(game::Interactable::Type(type)));
+  for (int type = 0; type <= int(game::Action::Type::Lose); ++type)
+    every.push_back(std::string("action ") + game::actionName(game::Action::Type(type)));
   std::vector<std::string> unused;
-  for (const auto& entry : kInteractableNames) {
-    const game::Interactable::Type type = entry.first;  // a plain variable: lambdas capture it
-    const char* name = entry.second;
-    const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
-      return std::any_of(
-          level->entities.begin(), level->entities.end(),
-          [&](const game::Entity& e) { return e.interactable && e.interactable->type == type; });
-    });
-    if (!used) unused.push_back(std::string("interactable ") + name);
-  }
-  for (const auto& entry : kActionNames) {
-    const game::Action::Type type = entry.first;
-    const char* name = entry.second;
-    const bool used = std::any_of(levels.begin(), levels.end(), [&](const game::Level* level) {
-      return std::any_of(level->rules.begin(), level->rules.end(), [&](const game::Rule& rule) {
-        return std::any_of(rule.actions.begin(), rule.actions.end(),
-                           [&](const game::Action& action) { return action.type == type; });
-      });
-    });
-    if (!used) unused.push_back(std::string("action ") + name);
-  }
+  for (const std::string& kind : every)
+    if (!used.contains(kind)) unused.push_back(kind);
   return unused;
 }
 

@@ -39,6 +39,9 @@ struct Interactable {
   bool startsOn = true;
 };
 
+// The name a level file gives the interactable kind ("rotate", "slide", "switch").
+const char* interactableName(Interactable::Type type);
+
 struct Entity {
   std::string id;
   uint32_t mesh = 0;      // index into Level::meshes

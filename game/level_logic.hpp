@@ -84,4 +84,7 @@ struct Rule {
   std::vector<Action> actions;
 };
 
+// The name a level file gives the action kind ("light_toggle"), as its "do" field reads it.
+const char* actionName(Action::Type type);
+
 }  // namespace game

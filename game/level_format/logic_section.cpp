@@ -8,6 +8,22 @@
 // The "logic" section: named rules, each a condition and the actions it runs (docs/LEVELS.md,
 // "Logic"). Checked as a whole once every rule is read: `fired` conditions may not form a cycle,
 // and a mover driven by a "while" rule may not be driven by any other rule.
+namespace game {
+
+const char* interactableName(Interactable::Type type) {
+  switch (type) {
+    case Interactable::Type::Rotate:
+      return "rotate";
+    case Interactable::Type::Slide:
+      return "slide";
+    case Interactable::Type::Switch:
+      return "switch";
+  }
+  return "";
+}
+
+}  // namespace game
+
 namespace game::level_format {
 
 namespace {
@@ -29,18 +45,6 @@ struct RuleReferences {
 
 std::string quoted(const std::string& text) {
   return "\"" + text + "\"";
-}
-
-const char* interactableName(Interactable::Type type) {
-  switch (type) {
-    case Interactable::Type::Rotate:
-      return "rotate";
-    case Interactable::Type::Slide:
-      return "slide";
-    case Interactable::Type::Switch:
-      return "switch";
-  }
-  return "";
 }
 
 // The entity at `pointer`, which must be an interactable of `type` (or of any type).
@@ -361,3 +365,11 @@ void readLogic(LevelReader& reader, const OrderedJson& logic, const std::string&
 }
 
 }  // namespace game::level_format
+
+namespace game {
+
+const char* actionName(Action::Type type) {
+  return level_format::kActionTypes[std::size_t(type)].c_str();
+}
+
+}  // namespace game
