@@ -28,7 +28,10 @@ void main() {
   vec4 surface = imageLoad(surfaceImage, pixel);
   uint instance = imageLoad(instanceImage, pixel).x;
   vec4 result = centre;
-  if (surface.w >= 0.0) {
+  // A pixel whose estimate has no variance (fully lit or fully shadowed, every sample alike)
+  // keeps its value: with a luminance scale of 1e-4 every differing tap weighs nothing. Only
+  // the penumbrae are filtered, and lavapipe skips the taps of whole uniform work-groups.
+  if (surface.w >= 0.0 && centre.a > 0.0) {
     const float kernel[3] = float[3](0.25, 0.5, 0.25);
     float centreLuminance = luminance(centre.rgb);
     float luminanceScale = 4.0 * sqrt(max(centre.a, 0.0)) + 1e-4;
