@@ -19,6 +19,10 @@ struct Aabb {
     return glm::all(glm::lessThanEqual(min, other.max)) &&
            glm::all(glm::lessThanEqual(other.min, max));
   }
+  // Faces included.
+  bool contains(const glm::vec3& point) const {
+    return glm::all(glm::greaterThanEqual(point, min)) && glm::all(glm::lessThanEqual(point, max));
+  }
 };
 
 // The box around `box` placed by `transform` (its eight corners).

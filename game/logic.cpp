@@ -73,8 +73,7 @@ bool Logic::evaluate(uint32_t index, uint64_t tick, const World& world) {
       break;
     case Condition::Type::Inside: {
       const glm::vec3 feet = world.feetPosition();
-      now = glm::all(glm::greaterThanEqual(feet, condition.min)) &&
-            glm::all(glm::lessThanEqual(feet, condition.max));
+      now = Aabb{condition.min, condition.max}.contains(feet);
       break;
     }
     case Condition::Type::Rotation:

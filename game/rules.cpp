@@ -108,8 +108,7 @@ bool Rules::evaluate(uint32_t index, const glm::vec3& feet) {
       met = node.runTicks >= node.needTicks;
       break;
     case Goal::Type::Reach: {
-      met = glm::all(glm::greaterThanEqual(feet, goal.min)) &&
-            glm::all(glm::lessThanEqual(feet, goal.max));
+      met = Aabb{goal.min, goal.max}.contains(feet);
       // How much of the way from where the player first stood has been covered.
       const float distance = glm::distance(feet, glm::clamp(feet, goal.min, goal.max));
       if (node.startDistance < 0.0f) node.startDistance = distance;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "game/collision.hpp"
+
 namespace game {
 
 namespace {
@@ -23,10 +25,6 @@ bool readsTheWorld(const Condition& condition) {
 void collectReachBoxes(const Goal& goal, std::vector<const Goal*>& boxes) {
   if (goal.type == Goal::Type::Reach) boxes.push_back(&goal);
   for (const Goal& child : goal.children) collectReachBoxes(child, boxes);
-}
-
-bool inside(const glm::vec3& point, const glm::vec3& min, const glm::vec3& max) {
-  return glm::all(glm::greaterThanEqual(point, min)) && glm::all(glm::lessThanEqual(point, max));
 }
 
 const char* verbFor(Interactable::Type type) {
@@ -95,8 +93,8 @@ void SolutionSteps::observe(const World& world, const Logic& logic) {
     record(*fired, "rule " + level_.rules[r].id);
   }
   for (size_t b = 0; b < reachBoxes_.size(); ++b) {
-    if (reachDone_[b] || !inside(world.feetPosition(), reachBoxes_[b]->min, reachBoxes_[b]->max))
-      continue;
+    const Aabb box{reachBoxes_[b]->min, reachBoxes_[b]->max};
+    if (reachDone_[b] || !box.contains(world.feetPosition())) continue;
     reachDone_[b] = 1;
     record(tick, "reach goal box " + std::to_string(b + 1));
   }
