@@ -12,6 +12,7 @@
 // In reference mode it is a plain running average with no clamping and no cap.
 
 const float MAX_HISTORY_LENGTH = float(DENOISER_MAX_HISTORY);
+const float MIN_MOVING_HISTORY = 4.0;  // the fewest frames a moving view averages
 // The history is clamped to the range of this frame's samples in a 5x5 neighbourhood, widened
 // by a margin: one-sample visibility is 0 or 1, so in a penumbra a smaller window is often
 // uniform by chance and a clamp to it would crush the history (bias that never converges);
@@ -51,6 +52,7 @@ void main() {
   vec3 history = current;
   vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
   float historyLength = 0.0;
+  float historyCap = MAX_HISTORY_LENGTH;
   vec4 motion = imageLoad(motionImage, pixel);
   if (!reset && surface.w >= 0.0 && motion.z >= 0.0) {
     vec2 previous = reference ? vec2(pixel) : motion.xy;
@@ -79,13 +81,19 @@ void main() {
         weightSum += weight;
       }
     }
+    // Each bilinear resampling blurs the history by a variance of f(1 - f) squared pixels per
+    // axis, and a running average over L frames holds samples resampled up to about L times:
+    // while the view moves, cap L so the blur's variance stays about a pixel squared (a sharp
+    // shadow edge would otherwise soften frame after frame). A still view (f = 0) keeps 32.
+    float blur = f.x * (1.0 - f.x) + f.y * (1.0 - f.y);
+    historyCap = clamp(1.0 / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
     if (weightSum > 1e-3) {
       history = historySum / weightSum;
       moments = momentsSum.xy / weightSum;
       historyLength = momentsSum.z / weightSum;
     }
   }
-  historyLength = min(historyLength + 1.0, reference ? 1.0e9 : MAX_HISTORY_LENGTH);
+  historyLength = min(historyLength + 1.0, reference ? 1.0e9 : historyCap);
   if (!reference && historyLength > 1.0) {
     history = clamp(history, low - CLAMP_MARGIN, high + CLAMP_MARGIN);
   }

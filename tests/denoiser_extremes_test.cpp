@@ -279,7 +279,8 @@ TEST_F(DenoiserExtremesTest, teleport_and_sharp_turn_restart_the_history_like_a_
         destination.pitchDegrees, differingBytes);
     EXPECT_EQ(differingBytes, 0u);
   }
-  // A 20 cm step and a 10-degree turn are no cut: the history grows on.
+  // A 20 cm step and a 10-degree turn are no cut: the history is reprojected, not restarted
+  // (a restart has length 1; a moving view keeps at least 4 frames).
   auto renderer = makeRenderer(scene, kSize);
   for (uint32_t frame = 0; frame < 8; ++frame) renderer->renderFrame(frameAt(frame), false);
   scene::CameraDesc stepped = topCamera();
@@ -288,8 +289,8 @@ TEST_F(DenoiserExtremesTest, teleport_and_sharp_turn_restart_the_history_like_a_
   renderer->renderFrame(frameAt(8, stepped), false);
   const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
   const size_t kept = size_t(std::count_if(moments.begin(), moments.end(),
-                                           [](const glm::vec4& m) { return m.z == 9.0f; }));
-  std::printf("step of 20 cm and 10 degrees: %zu of %u pixels keep a 9-frame history\n", kept,
+                                           [](const glm::vec4& m) { return m.z >= 4.0f; }));
+  std::printf("step of 20 cm and 10 degrees: %zu of %u pixels keep their history\n", kept,
               kSize * kSize);
   EXPECT_GT(kept, kSize * kSize / 2);
 }

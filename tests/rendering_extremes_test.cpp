@@ -165,10 +165,11 @@ TEST_F(RenderingExtremesTest, soft_shadow_level_far_from_the_origin_denoises_a_m
       frame.camera.yawDegrees += 0.5f;
       renderer.renderFrame(frame, i == 7);
     }
-    // Most of the view keeps its history through the walk (the rest is sky or disoccluded).
+    // Most of the view keeps its history through the walk (the rest is sky or disoccluded): a
+    // restarted history has length 1, a reprojected one while moving at least 4.
     size_t kept = 0;
     for (const glm::vec4& moments : renderer.readDenoiser(render::DenoiserImage::Moments))
-      kept += moments.z == 8.0f;
+      kept += moments.z >= 4.0f;
     std::printf("history kept over 8 frames: %.1f %% of pixels\n",
                 100.0 * double(kept) / double(kWidth * kHeight));
     EXPECT_GT(kept, kWidth * kHeight / 2) << "the history was not reprojected";
