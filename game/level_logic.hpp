@@ -31,6 +31,7 @@ struct Condition {
   Type type = Type::Fired;
   uint32_t entity = 0;           // Focus: the orb; Lit: the sensor; Rotation/Slide/Switch
   uint32_t light = 0;            // Lit, Seen
+  std::string label;             // Lit, Seen: the HUD meter's words; "" for the default ones
   glm::vec2 region{0.2f, 0.2f};  // Focus
   float coverage = 0.5f;         // Focus
   float threshold = 0.5f;        // Lit, Seen

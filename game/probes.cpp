@@ -47,12 +47,16 @@ void addConditionProbes(const Level& level, const Condition& condition, ProbeLay
     case Condition::Type::Lit:
       layout.exposure.push_back(
           {ExposureProbe::Target::Entity, condition.entity, condition.light,
-           litLabel(level, condition.entity, condition.light, condition.channel),
+           condition.label.empty()
+               ? litLabel(level, condition.entity, condition.light, condition.channel)
+               : condition.label,
            condition.threshold, condition.channel});
       break;
     case Condition::Type::Seen:
-      layout.exposure.push_back({ExposureProbe::Target::Player, 0, condition.light,
-                                 seenLabel(level, condition.light), condition.threshold});
+      layout.exposure.push_back(
+          {ExposureProbe::Target::Player, 0, condition.light,
+           condition.label.empty() ? seenLabel(level, condition.light) : condition.label,
+           condition.threshold});
       break;
     default:
       break;

@@ -218,6 +218,27 @@ TEST(LevelLogic, probe_conditions_read_their_own_probes_after_the_goals) {
   EXPECT_EQ(run.logic.firings(1).size(), 1u);
 }
 
+// A rule's lit and seen meters on the HUD read the author's words where the condition has a
+// label, the ids otherwise.
+TEST(LevelLogic, lit_and_seen_conditions_name_their_meters_with_the_label) {
+  const game::Level level = levelWithRules(R"({
+    "lit": { "when": { "type": "lit", "label": "The door sees the lamp", "sensor": "door",
+                       "light": "lamp" },
+             "then": [{ "do": "message", "text": "lit" }] },
+    "seen": { "when": { "type": "seen", "label": "Seen by the lamp", "watcher": "lamp" },
+              "then": [{ "do": "message", "text": "seen" }] },
+    "plain": { "when": { "type": "seen", "watcher": "lamp" },
+               "then": [{ "do": "message", "text": "plain" }] } })");
+  const game::ProbeLayout layout = game::probeLayout(level);
+  ASSERT_EQ(layout.exposure.size(), 3u);
+  EXPECT_EQ(layout.exposure[0].label, "The door sees the lamp");
+  EXPECT_EQ(layout.exposure[1].label, "Seen by the lamp");
+  EXPECT_EQ(layout.exposure[2].label, "Seen by \"lamp\"");
+  EXPECT_THROW(levelWithRules(R"({ "empty": { "when": { "type": "seen", "label": "",
+      "watcher": "lamp" }, "then": [{ "do": "message", "text": "x" }] } })"),
+               game::LevelError);
+}
+
 TEST(LevelLogic, a_slide_condition_fires_when_the_player_pulls_the_slider_far_enough) {
   const game::Level level = levelWithRules(R"({
     "open": { "when": { "type": "slide", "entity": "shade", "min": 0.5, "max": 2 },

@@ -85,8 +85,9 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
       break;
     case Condition::Type::Lit:
       reader.checkKeys(json, pointer,
-                       {"type", "sensor", "light", "threshold", "color", "hold_seconds"},
+                       {"type", "label", "sensor", "light", "threshold", "color", "hold_seconds"},
                        {"sensor", "light"}, what);
+      condition.label = reader.readOptionalLabel(json, pointer);
       condition.entity =
           reader.readReference(json["sensor"], childPointer(pointer, "sensor"), IdKind::Entity);
       condition.light =
@@ -96,8 +97,9 @@ Condition readCondition(const LevelReader& reader, const Level& level, const Ord
       condition.channel = reader.readSensorColor(json, pointer);
       break;
     case Condition::Type::Seen:
-      reader.checkKeys(json, pointer, {"type", "watcher", "threshold", "hold_seconds"}, {"watcher"},
-                       what);
+      reader.checkKeys(json, pointer, {"type", "label", "watcher", "threshold", "hold_seconds"},
+                       {"watcher"}, what);
+      condition.label = reader.readOptionalLabel(json, pointer);
       condition.light =
           reader.readReference(json["watcher"], childPointer(pointer, "watcher"), IdKind::Light);
       condition.threshold =
