@@ -1,5 +1,8 @@
 #include "game/probes.hpp"
 
+#include <algorithm>
+#include <set>
+
 namespace game {
 
 namespace {
@@ -79,6 +82,23 @@ ProbeLayout probeLayout(const Level& level) {
   layout.firstLogicExposure = layout.exposure.size();
   for (const Rule& rule : level.rules) addConditionProbes(level, rule.condition, layout);
   return layout;
+}
+
+std::vector<size_t> hudMeters(const std::vector<ExposureProbe>& meters,
+                              const std::vector<float>& readings, size_t rows) {
+  std::vector<size_t> distinct;
+  std::set<std::string> labels;
+  for (size_t i = 0; i < meters.size(); ++i)
+    if (labels.insert(meters[i].label).second) distinct.push_back(i);
+  auto priority = [&](size_t i) {
+    if (meters[i].target == ExposureProbe::Target::Player) return 0;
+    return i < readings.size() && readings[i] > 0.0f ? 1 : 2;
+  };
+  std::stable_sort(distinct.begin(), distinct.end(),
+                   [&](size_t a, size_t b) { return priority(a) < priority(b); });
+  if (distinct.size() > rows) distinct.resize(rows);
+  std::sort(distinct.begin(), distinct.end());
+  return distinct;
 }
 
 }  // namespace game

@@ -51,4 +51,11 @@ struct ProbeReadings {
                                      // the light (area lights: over points on the light)
 };
 
+// Which exposure meters the HUD shows when it has room for `rows`, in the layout's order: a
+// watcher's first (being seen loses the level), then those reading something, then the rest;
+// a meter with the same words as an earlier one measures the same thing and is shown once.
+// `readings` may be empty (none arrived yet).
+std::vector<size_t> hudMeters(const std::vector<ExposureProbe>& meters,
+                              const std::vector<float>& readings, size_t rows);
+
 }  // namespace game

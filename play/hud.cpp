@@ -33,6 +33,14 @@ void shadowedText(ImDrawList* list, ImVec2 at, ImU32 textColour, const std::stri
   list->AddText(font, size, at, textColour, text.c_str(), nullptr, wrapWidth);
 }
 
+// The exposure meters that get the HUD's rows (game::hudMeters), from the latest readings.
+std::vector<size_t> shownMeters(const sim::Simulation& simulation) {
+  const auto& readings = simulation.latestReadings();
+  static const std::vector<float> kNone;
+  return game::hudMeters(simulation.layout().exposure, readings ? readings->exposure : kNone,
+                         kHudRows);
+}
+
 std::string percent(float share) {
   return std::to_string(int(std::clamp(share, 0.0f, 1.0f) * 100.0f + 0.5f)) + "%";
 }
@@ -110,10 +118,12 @@ std::vector<render::HudRect> hudRects(const sim::Simulation& simulation) {
         goals[i].met ? HudColour::BluishGreen : HudColour::SkyBlue);
   const auto& readings = simulation.latestReadings();
   const std::vector<game::ExposureProbe>& meters = simulation.layout().exposure;
-  for (size_t i = 0; i < meters.size() && i < kHudRows; ++i) {
-    bar(kExposureBarLeft, int(i), readings ? readings->exposure[i] : 0.0f, HudColour::Orange);
+  const std::vector<size_t> shown = shownMeters(simulation);
+  for (size_t row = 0; row < shown.size(); ++row) {
+    const size_t i = shown[row];
+    bar(kExposureBarLeft, int(row), readings ? readings->exposure[i] : 0.0f, HudColour::Orange);
     // Where the reading starts to count: a lit sensor at or above it, a watcher above it.
-    const float y0 = kBarTop - kBarGap * float(i),
+    const float y0 = kBarTop - kBarGap * float(row),
                 x = kExposureBarLeft + kBarWidth * meters[i].threshold;
     rects.push_back(
         {x - 0.002f, y0 - 0.006f, x + 0.002f, y0 + kBarHeight + 0.006f, HudColour::White});
@@ -180,8 +190,10 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   }
   const auto& readings = simulation.latestReadings();
   const std::vector<game::ExposureProbe>& meters = simulation.layout().exposure;
-  for (size_t i = 0; i < meters.size() && i < kHudRows; ++i) {
-    barText(kExposureBarLeft, i,
+  const std::vector<size_t> shown = shownMeters(simulation);
+  for (size_t row = 0; row < shown.size(); ++row) {
+    const size_t i = shown[row];
+    barText(kExposureBarLeft, row,
             meters[i].label + "  " + percent(readings ? readings->exposure[i] : 0.0f), white);
   }
   // What the crosshair is on, and how to use it.

@@ -239,6 +239,19 @@ TEST(LevelLogic, lit_and_seen_conditions_name_their_meters_with_the_label) {
                game::LevelError);
 }
 
+// With more meters than rows the HUD shows a watcher's first, then those reading something,
+// then the rest, each measurement once, in the layout's order.
+TEST(LevelLogic, the_hud_shows_watchers_then_meters_that_read_something_each_once) {
+  using Probe = game::ExposureProbe;
+  auto lit = [](const char* label) { return Probe{Probe::Target::Entity, 0, 0, label}; };
+  const std::vector<Probe> meters = {
+      lit("A"), lit("B"), lit("A"), lit("C"), Probe{Probe::Target::Player, 0, 0, "Seen"}, lit("D")};
+  const std::vector<float> readings = {0.0f, 0.0f, 0.0f, 0.5f, 0.0f, 0.2f};
+  EXPECT_EQ(game::hudMeters(meters, readings, 3), (std::vector<size_t>{3, 4, 5}));
+  EXPECT_EQ(game::hudMeters(meters, {}, 3), (std::vector<size_t>{0, 1, 4}));
+  EXPECT_EQ(game::hudMeters(meters, readings, 10), (std::vector<size_t>{0, 1, 3, 4, 5}));
+}
+
 TEST(LevelLogic, a_slide_condition_fires_when_the_player_pulls_the_slider_far_enough) {
   const game::Level level = levelWithRules(R"({
     "open": { "when": { "type": "slide", "entity": "shade", "min": 0.5, "max": 2 },
