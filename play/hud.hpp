@@ -15,7 +15,8 @@ namespace play {
 struct PlayedLevel;
 
 // Each focus region's frame, a crosshair, a bar per goal (blue, green when met), a meter per
-// exposure probe (orange, with a mark where its reading starts to count), and a band at the top
+// exposure probe that has a row (game::hudMeters; orange, with a mark where its reading starts
+// to count), and a band at the top
 // once the level is won (green) or lost (red-orange).
 std::vector<render::HudRect> hudRects(const sim::Simulation& simulation);
 
