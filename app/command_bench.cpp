@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/csv_field.hpp"
 #include "app/data_paths.hpp"
 #include "app/session.hpp"
 #include "game/level.hpp"
@@ -139,13 +140,6 @@ struct BenchRow {
   // The trace pass's ray rate as a fraction of Embree's (only with an Embree measurement).
   double traceOverEmbree() const { return traceMraysPerSecond() / embree->mraysPerSecond(); }
 };
-
-std::string csvField(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
-}
 
 void writeCsv(const fs::path& file, const std::vector<BenchRow>& rows) {
   std::ofstream out(file);

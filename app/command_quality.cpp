@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/csv_field.hpp"
 #include "app/data_paths.hpp"
 #include "app/quality_plot.hpp"
 #include "app/session.hpp"
@@ -213,9 +214,9 @@ int commandBenchQuality(const Options& options) {
   std::printf("%-28s %8s %10s %10s %10s %10s\n", "configuration", "GPU ms", "vis RMSE", "vis SSIM",
               "img RMSE", "img SSIM");
   for (const Row& row : rows) {
-    table << row.configuration << "," << row.samples << "," << row.frames << "," << row.gpuMs << ","
-          << row.visibilityRmse << "," << row.visibilitySsim << "," << row.imageRmse << ","
-          << row.imageSsim << "\n";
+    table << csvField(row.configuration) << "," << row.samples << "," << row.frames << ","
+          << row.gpuMs << "," << row.visibilityRmse << "," << row.visibilitySsim << ","
+          << row.imageRmse << "," << row.imageSsim << "\n";
     std::printf("%-28s %8.3f %10.5f %10.4f %10.5f %10.4f\n", row.configuration.c_str(), row.gpuMs,
                 row.visibilityRmse, row.visibilitySsim, row.imageRmse, row.imageSsim);
   }

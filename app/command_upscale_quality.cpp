@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/commands.hpp"
+#include "app/csv_field.hpp"
 #include "app/data_paths.hpp"
 #include "app/quality_plot.hpp"
 #include "app/session.hpp"
@@ -291,8 +292,8 @@ int commandBenchUpscale(const Options& options) {
   std::printf("%-30s %8s %14s %10s %8s\n", "configuration", "frames", "tonemap+up ms", "RMSE",
               "SSIM");
   for (const Row& row : rows) {
-    table << row.configuration << "," << row.frames << "," << row.gpuMs << "," << row.rmse << ","
-          << row.ssim << "\n";
+    table << csvField(row.configuration) << "," << row.frames << "," << row.gpuMs << "," << row.rmse
+          << "," << row.ssim << "\n";
     std::printf("%-30s %8u %14.3f %10.5f %8.4f\n", row.configuration.c_str(), row.frames, row.gpuMs,
                 row.rmse, row.ssim);
   }
