@@ -34,7 +34,8 @@ constexpr uint32_t kReferenceFirstFrame = 1u << 20;
 // denoiser's history has settled by then.
 constexpr uint32_t kSettleFrames = 32;
 // The strafing camera: walking speed at 30 frames a second.
-constexpr float kStrafePerFrame = game::PlayerSettings{}.walkSpeed / 30.0f;
+constexpr float kWalkPerFrame = game::PlayerSettings{}.walkSpeed / 30.0f;
+constexpr uint32_t kLongestWalkFrames = 31;  // the moving run's last frame
 
 struct Picture {
   uint32_t width = 0, height = 0;
@@ -93,15 +94,12 @@ std::vector<float> luminance(const Picture& picture) {
   return result;
 }
 
-scene::CameraDesc strafedAt(const game::Level& level, uint32_t frame) {
-  return strafed(level.camera, kStrafePerFrame * float(frame));
-}
-
 class UpscaleBench {
  public:
   UpscaleBench(const game::Level& level, const Options& options)
       : level_(level),
         options_(options),
+        walk_(walkWithRoom(level, kWalkPerFrame * float(kLongestWalkFrames))),
         scene_(game::buildSceneDesc(level)),
         context_(contextOptions(options)),
         compiler_(makeCompiler(findDataRoot())) {}
@@ -118,6 +116,15 @@ class UpscaleBench {
     scene::FrameDesc frame = frameFor(level_, options_, index);
     frame.camera = camera;
     return frame;
+  }
+
+  const char* walkName() const { return walk_.name; }
+
+  // The camera walking at walking speed where the whole moving run has room.
+  scene::CameraDesc walkedAt(uint32_t frame) const {
+    scene::CameraDesc camera = level_.camera;
+    camera.position += walk_.direction * (kWalkPerFrame * float(frame));
+    return camera;
   }
 
   // The average, in linear light, of `samples` native frames at the output size with camera
@@ -162,7 +169,7 @@ class UpscaleBench {
       const bool measured =
           std::find(checkpoints.begin(), checkpoints.end(), i) != checkpoints.end();
       const render::FrameStats stats =
-          r->renderFrame(frame(i - 1, moving ? strafedAt(level_, i - 1) : level_.camera), measured);
+          r->renderFrame(frame(i - 1, moving ? walkedAt(i - 1) : level_.camera), measured);
       if (measured) results.push_back({pictureOf(*r), stats.gpu.tonemapMs});
     }
     return results;
@@ -173,6 +180,7 @@ class UpscaleBench {
  private:
   const game::Level& level_;
   const Options& options_;
+  Walk walk_;  // where the moving run has room
   scene::SceneDesc scene_;
   render::Context context_;
   render::ShaderCompiler compiler_;
@@ -248,6 +256,8 @@ int commandBenchUpscale(const Options& options) {
   std::printf("%s: %ux%u -> %ux%u on %s; reference: %u jittered samples per pixel at %ux%u\n",
               level.name.c_str(), options.width, options.height, outputWidth, outputHeight,
               bench.context().deviceInfo().name.c_str(), samples, outputWidth, outputHeight);
+  std::printf("moving: the camera walks %s at %.2f m a frame\n", bench.walkName(),
+              double(kWalkPerFrame));
 
   const fs::path outDirectory = options.out.value_or(fs::path("out"));
   fs::create_directories(outDirectory);
@@ -278,7 +288,7 @@ int commandBenchUpscale(const Options& options) {
   for (size_t i = 0; i < movingCheckpoints.size(); ++i) {
     const uint32_t frames = movingCheckpoints[i];
     const Picture moved =
-        bench.reference(strafedAt(level, frames - 1), outputWidth, outputHeight, samples);
+        bench.reference(bench.walkedAt(frames - 1), outputWidth, outputHeight, samples);
     rows.push_back(measure("TAAU moving after " + std::to_string(frames), frames,
                            movingRuns[i].second, movingRuns[i].first, moved));
     writePicture(outDirectory / ("upscale_" + stem + "_moving_" + std::to_string(frames) + ".png"),

@@ -4,12 +4,43 @@
 
 #include <glm/glm.hpp>
 
+#include "game/collision.hpp"
+
 namespace app {
+namespace {
+
+glm::vec3 rightOf(const scene::CameraDesc& camera) {
+  const float yaw = glm::radians(camera.yawDegrees);
+  return glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw));
+}
+
+}  // namespace
 
 scene::CameraDesc strafed(scene::CameraDesc camera, float metres) {
-  const float yaw = glm::radians(camera.yawDegrees);
-  camera.position += glm::vec3(std::cos(yaw), 0.0f, -std::sin(yaw)) * metres;
+  camera.position += rightOf(camera) * metres;
   return camera;
+}
+
+Walk walkWithRoom(const game::Level& level, float metres) {
+  constexpr float kClearance = 0.3f;  // what the camera keeps from a wall at the end
+  const game::CollisionWorld world(level);
+  const glm::vec3 right = rightOf(level.camera);
+  const glm::vec3 ahead(right.z, 0.0f, -right.x);
+  const Walk walks[] = {
+      {"to its right", right}, {"to its left", -right}, {"ahead", ahead}, {"backwards", -ahead}};
+  const float reach = metres + kClearance;
+  Walk roomiest = walks[0];
+  float most = -1.0f;
+  for (const Walk& walk : walks) {
+    const auto hit = world.rayCast(level.camera.position, walk.direction, reach);
+    const float room = hit ? hit->distance : reach;
+    if (room >= reach) return walk;
+    if (room > most) {
+      most = room;
+      roomiest = walk;
+    }
+  }
+  return roomiest;
 }
 
 void writePlotFrame(std::ostream& svg, const PlotArea& area, const std::string& title,

@@ -1,15 +1,27 @@
 #pragma once
 // What the image-quality benches (bench-quality, bench-upscale) share: a camera strafing to the
-// right, and the frame of an SVG plot (background, title, axes box and labels).
+// side, and the frame of an SVG plot (background, title, axes box and labels).
 #include <ostream>
 #include <string>
 
+#include <glm/glm.hpp>
+
+#include "game/level.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace app {
 
-// `camera` moved `metres` to its right (along the ground, by its yaw).
+// `camera` moved `metres` to its right (along the ground, by its yaw); negative: to its left.
 scene::CameraDesc strafed(scene::CameraDesc camera, float metres);
+
+// Where a camera walking `metres` from the level's camera can go without passing through a
+// wall (a walk into one would measure its inside), by ray casts against the level's geometry:
+// its right, its left, ahead or behind, the first with room; where none has, the one with most.
+struct Walk {
+  const char* name = "to its right";
+  glm::vec3 direction{1.0f, 0.0f, 0.0f};  // unit, in the ground plane
+};
+Walk walkWithRoom(const game::Level& level, float metres);
 
 // The plot area of every quality plot, in SVG pixels.
 struct PlotArea {
