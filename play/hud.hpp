@@ -16,8 +16,7 @@ struct PlayedLevel;
 
 // Each focus region's frame, a crosshair, a bar per goal (blue, green when met), a meter per
 // exposure probe that has a row (game::hudMeters; orange, with a mark where its reading starts
-// to count), and a band at the top
-// once the level is won (green) or lost (red-orange).
+// to count), and a band at the top once the level is won (green) or lost (red-orange).
 std::vector<render::HudRect> hudRects(const sim::Simulation& simulation);
 
 // Level name and hint (top left), fps (top right), a label beside each HUD bar (a meter says
