@@ -31,14 +31,11 @@ std::string quotedLightId(const Level& level, uint32_t light) {
   return quotedId(light < level.lightIds.size() ? level.lightIds[light] : "", light);
 }
 
-scene::SceneDesc buildSceneDesc(const Level& level) {
+scene::SceneDesc buildSceneDesc(const Level& level, const World& world) {
   scene::SceneDesc scene;
   scene.meshes = level.meshes;
   scene.materials = level.materials;
   scene.textures = level.textures;
-  // As the level starts: interactables at their start values, movers at time 0, switches'
-  // lights as the switches start (the world's poses; the game's first frame is the same).
-  const World world(level);
   scene.lights = world.lights();  // with enabled, radius, size and angular diameter
   scene.environment = level.environment;
   scene.maxMirrorBounces = level.maxMirrorBounces;
@@ -55,6 +52,10 @@ scene::SceneDesc buildSceneDesc(const Level& level) {
     scene.instances.push_back(std::move(instance));
   }
   return scene;
+}
+
+scene::SceneDesc buildSceneDesc(const Level& level) {
+  return buildSceneDesc(level, World(level));
 }
 
 }  // namespace game

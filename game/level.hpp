@@ -124,7 +124,12 @@ glm::mat4 entityTransform(const Entity& entity);
 std::string quotedEntityId(const Level& level, uint32_t entity);
 std::string quotedLightId(const Level& level, uint32_t light);
 
-// What the renderer needs to draw the level (entities at their start positions).
+class World;
+
+// What the renderer needs to draw the level, its entities and lights as `world` has them.
+scene::SceneDesc buildSceneDesc(const Level& level, const World& world);
+// The same as the level starts (interactables at their start values, movers at time 0,
+// switches' lights as the switches start), from a World made for it.
 scene::SceneDesc buildSceneDesc(const Level& level);
 
 // The renderer features a level uses, for `sightline info` and pipeline variants.

@@ -23,9 +23,10 @@ render::RendererOptions rendererOptions(const SimulationOptions& options) {
   return result;
 }
 
-// The level's scene and, after its entities' instances, the player's body.
-scene::SceneDesc sceneFor(const game::Level& level, const game::ProbeLayout& layout) {
-  scene::SceneDesc scene = game::buildSceneDesc(level);
+// The level's scene as `world` has it and, after its entities' instances, the player's body.
+scene::SceneDesc sceneFor(const game::Level& level, const game::World& world,
+                          const game::ProbeLayout& layout) {
+  scene::SceneDesc scene = game::buildSceneDesc(level, world);
   scene.exposureProbes = !layout.exposure.empty();
   scene::InstanceDesc body;
   body.mesh = uint32_t(scene.meshes.size());
@@ -47,8 +48,8 @@ Simulation::Simulation(const render::Context& context, render::ShaderCompiler& c
       layout_(game::probeLayout(level)),
       rules_(level, layout_),
       logic_(level, layout_),
-      renderer_(std::make_unique<render::Renderer>(context, compiler, sceneFor(level, layout_),
-                                                   rendererOptions(options))) {
+      renderer_(std::make_unique<render::Renderer>(
+          context, compiler, sceneFor(level, world_, layout_), rendererOptions(options))) {
   for (const game::ExposureProbe& probe : layout_.exposure) {
     sensorSamples_.push_back(
         probe.target == game::ExposureProbe::Target::Entity
