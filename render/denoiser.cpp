@@ -96,9 +96,14 @@ std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity
   };
 }
 
-void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout) {
+void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout,
+                               NeighbourhoodReads reads) {
+  const bool tile = reads == NeighbourhoodReads::Tile ||
+                    (reads == NeighbourhoodReads::Auto && !context_.isCpuDevice());
   temporal_ = createComputePipeline(
-      context_, layout, compiler.compile("denoise_temporal.comp").spirv, "denoise temporal");
+      context_, layout,
+      compiler.compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"}}).spirv,
+      "denoise temporal");
   atrous_ = createComputePipeline(context_, layout, compiler.compile("denoise_atrous.comp").spirv,
                                   "denoise a-trous");
 }

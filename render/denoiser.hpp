@@ -23,6 +23,9 @@ enum class DenoiserImage {
   SoftLight,      // this frame's unshadowed light of the soft lights (rgb), before visibility
 };
 
+// How the temporal pass reads each pixel's 5x5 neighbourhood (RendererOptions).
+enum class NeighbourhoodReads { Auto, Tile, PerPixel };
+
 class Denoiser {
  public:
   Denoiser(const Context& context, uint32_t width, uint32_t height);
@@ -34,7 +37,8 @@ class Denoiser {
   // parity's images, so nothing is copied between frames.
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
 
-  void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout);
+  // `reads`: Auto picks the shared-memory tile on GPUs and per-pixel reads on CPU drivers.
+  void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout, NeighbourhoodReads reads);
 
   // Temporal pass then `iterations` a-trous passes; the caller has ordered ray-gen's writes
   // before and orders the tonemap's reads after.

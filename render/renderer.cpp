@@ -504,7 +504,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
       context_, pipelineLayout_,
       compiler.compile("tonemap.comp", {{"SOFT_SHADOWS", features.softShadows ? "1" : "0"}}).spirv,
       "tonemap");
-  if (denoiser_) denoiser_->createPipelines(compiler, pipelineLayout_);
+  if (denoiser_) denoiser_->createPipelines(compiler, pipelineLayout_, options_.neighbourhoodReads);
   if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_);
 }
 

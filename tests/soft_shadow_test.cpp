@@ -435,3 +435,34 @@ TEST_F(SoftShadowTest, an_area_light_is_seen_in_a_mirror) {
   const int centre = pixels[(kSize / 2 * kSize + kSize / 2) * 4 + 1];
   EXPECT_NEAR(centre, int(std::lround(scene::linearToSrgb(0.5f) * 255.0f)), 1);
 }
+
+TEST_F(SoftShadowTest, the_shared_memory_tile_and_per_pixel_reads_denoise_alike) {
+  // GPUs read the temporal pass's 5x5 neighbourhoods from a work-group tile, CPU drivers from
+  // the image: the same frames must come out bit for bit the same, at a size that leaves
+  // partial work-groups on both edges, with a moving view.
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const auto render = [&](render::NeighbourhoodReads reads) {
+    render::RendererOptions options;
+    options.width = 45;
+    options.height = 37;
+    options.neighbourhoodReads = reads;
+    render::Renderer renderer(context(), compiler(), scene, options);
+    for (uint32_t frame = 0; frame < 6; ++frame) {
+      scene::FrameDesc desc = frameAt(frame);
+      desc.camera.position.z += 0.02f * float(frame);
+      renderer.renderFrame(desc);
+    }
+    return std::make_pair(renderer.readDenoiser(DenoiserImage::Denoised),
+                          renderer.readDenoiser(DenoiserImage::Moments));
+  };
+  const auto tile = render(render::NeighbourhoodReads::Tile);
+  const auto perPixel = render(render::NeighbourhoodReads::PerPixel);
+  ASSERT_EQ(tile.first.size(), size_t(45 * 37));
+  size_t differing = 0, penumbra = 0;
+  for (size_t i = 0; i < tile.first.size(); ++i) {
+    if (tile.first[i] != perPixel.first[i] || tile.second[i] != perPixel.second[i]) ++differing;
+    if (perPixel.first[i].r > 0.0f && perPixel.first[i].r < 1.0f) ++penumbra;
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(penumbra, 20u);  // the comparison covers filtered pixels, not only uniform ones
+}
