@@ -100,17 +100,24 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
                                NeighbourhoodReads reads) {
   const bool tile = reads == NeighbourhoodReads::Tile ||
                     (reads == NeighbourhoodReads::Auto && !context_.isCpuDevice());
+  const std::string group = std::to_string(kGroupSize);
   temporal_ = createComputePipeline(
       context_, layout,
-      compiler.compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"}}).spirv,
+      compiler
+          .compile("denoise_temporal.comp",
+                   {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"}, {"DENOISER_GROUP_SIZE", group}})
+          .spirv,
       "denoise temporal");
-  atrous_ = createComputePipeline(context_, layout, compiler.compile("denoise_atrous.comp").spirv,
-                                  "denoise a-trous");
+  atrous_ = createComputePipeline(
+      context_, layout,
+      compiler.compile("denoise_atrous.comp", {{"DENOISER_GROUP_SIZE", group}}).spirv,
+      "denoise a-trous");
 }
 
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
                       uint32_t iterations) const {
-  const uint32_t groupsX = (width_ + 7) / 8, groupsY = (height_ + 7) / 8;
+  const uint32_t groupsX = (width_ + kGroupSize - 1) / kGroupSize,
+                 groupsY = (height_ + kGroupSize - 1) / kGroupSize;
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
   vkCmdDispatch(commands, groupsX, groupsY, 1);

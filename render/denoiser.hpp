@@ -28,6 +28,10 @@ enum class NeighbourhoodReads { Auto, Tile, PerPixel };
 
 class Denoiser {
  public:
+  // Its passes run in work-groups of kGroupSize x kGroupSize pixels: on the H100 at 3840x2160
+  // 16 took 0.51-0.65 ms where 8 took 0.58-0.68 and 32 0.70-0.86; lavapipe is indifferent.
+  static constexpr uint32_t kGroupSize = 16;
+
   Denoiser(const Context& context, uint32_t width, uint32_t height);
   ~Denoiser();
   Denoiser(const Denoiser&) = delete;

@@ -1,5 +1,8 @@
 // Shared by the denoiser passes.
-layout(local_size_x = 8, local_size_y = 8) in;
+#ifndef DENOISER_GROUP_SIZE  // the renderer defines it (Denoiser::kGroupSize)
+#define DENOISER_GROUP_SIZE 16
+#endif
+layout(local_size_x = DENOISER_GROUP_SIZE, local_size_y = DENOISER_GROUP_SIZE) in;
 
 float luminance(vec3 rgb) { return dot(rgb, vec3(0.2126, 0.7152, 0.0722)); }
 
