@@ -44,7 +44,7 @@ struct RendererOptions {
   uint32_t denoiserIterations = 3;  // a-trous iterations after the temporal pass (0..5)
   // How the denoiser's temporal pass reads each pixel's 5x5 neighbourhood of samples: from a
   // work-group tile in shared memory (Tile) or from the image (PerPixel). The results are the
-  // same; Auto takes the tile on GPUs and the image reads on CPU drivers, where it is faster.
+  // same; Auto takes the tile on GPUs and the image reads on CPU drivers (faster there).
   NeighbourhoodReads neighbourhoodReads = NeighbourhoodReads::Auto;
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;
