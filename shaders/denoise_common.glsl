@@ -13,8 +13,11 @@ bool insideImage(ivec2 pixel) {
          all(lessThan(pixel, ivec2(frame.sizeFrameLights.xy)));
 }
 
-// The raw visibility estimate, with anything non-finite replaced so it never spreads.
-vec3 rawVisibility(ivec2 pixel) {
-  vec3 value = imageLoad(visibilityRawImage, pixel).rgb;
-  return isFinite(value) ? clamp(value, 0.0, 1.0) : vec3(1.0);
+// The raw visibility estimate (rgb), with anything non-finite replaced so it never spreads,
+// and the width of the penumbra there in pixels (a; below 0 where no sample met a caster).
+vec4 rawSample(ivec2 pixel) {
+  vec4 value = imageLoad(visibilityRawImage, pixel);
+  vec3 visibility = isFinite(value.rgb) ? clamp(value.rgb, 0.0, 1.0) : vec3(1.0);
+  float penumbra = isnan(value.a) ? -1.0 : value.a;
+  return vec4(visibility, penumbra);
 }

@@ -35,25 +35,25 @@ const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
 // than the reads it saves, so the CPU build reads each neighbour from the image.
 const ivec2 TILE_SIZE = ivec2(gl_WorkGroupSize.xy) + 2 * NEIGHBOURHOOD_RADIUS;
 const int TILE_SAMPLES = TILE_SIZE.x * TILE_SIZE.y;
-shared vec3 tileSamples[TILE_SAMPLES];
+shared vec4 tileSamples[TILE_SAMPLES];
 
 void loadTile() {
   ivec2 tileOrigin = ivec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy) - NEIGHBOURHOOD_RADIUS;
   uint groupInvocations = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
   for (uint i = gl_LocalInvocationIndex; i < uint(TILE_SAMPLES); i += groupInvocations) {
     ivec2 at = tileOrigin + ivec2(int(i) % TILE_SIZE.x, int(i) / TILE_SIZE.x);
-    tileSamples[i] = insideImage(at) ? rawVisibility(at) : vec3(OUTSIDE_IMAGE);
+    tileSamples[i] = insideImage(at) ? rawSample(at) : vec4(OUTSIDE_IMAGE);
   }
 }
 
-vec3 neighbourSample(ivec2 offset) {
+vec4 neighbourSample(ivec2 offset) {
   ivec2 at = ivec2(gl_LocalInvocationID.xy) + NEIGHBOURHOOD_RADIUS + offset;
   return tileSamples[at.y * TILE_SIZE.x + at.x];
 }
 #else
-vec3 neighbourSample(ivec2 offset) {
+vec4 neighbourSample(ivec2 offset) {
   ivec2 at = ivec2(gl_GlobalInvocationID.xy) + offset;
-  return insideImage(at) ? rawVisibility(at) : vec3(OUTSIDE_IMAGE);
+  return insideImage(at) ? rawSample(at) : vec4(OUTSIDE_IMAGE);
 }
 #endif
 
@@ -66,17 +66,25 @@ void main() {
   if (!insideImage(pixel)) return;
   bool reset = frame.denoise.x != 0u;
   bool reference = frame.denoise.y != 0u;
-  vec3 current = neighbourSample(ivec2(0));
+  vec3 current = neighbourSample(ivec2(0)).rgb;
   vec4 surface = imageLoad(surfaceImage, pixel);
   uint instance = imageLoad(instanceImage, pixel).x;
 
   vec3 sum = vec3(0.0), sumSquares = vec3(0.0);
   vec3 low = vec3(1.0), high = vec3(0.0);
   float count = 0.0;
+  // The penumbra's width here: the mean over the neighbourhood's samples that met a caster
+  // (a sample that reached the light says nothing of it).
+  float penumbraSum = 0.0, penumbraSamples = 0.0;
   for (int dy = -NEIGHBOURHOOD_RADIUS; dy <= NEIGHBOURHOOD_RADIUS; ++dy) {
     for (int dx = -NEIGHBOURHOOD_RADIUS; dx <= NEIGHBOURHOOD_RADIUS; ++dx) {
-      vec3 value = neighbourSample(ivec2(dx, dy));
-      if (value.x == OUTSIDE_IMAGE) continue;
+      vec4 sampled = neighbourSample(ivec2(dx, dy));
+      if (sampled.x == OUTSIDE_IMAGE) continue;
+      if (sampled.a >= 0.0) {
+        penumbraSum += sampled.a;
+        penumbraSamples += 1.0;
+      }
+      vec3 value = sampled.rgb;
       sum += value;
       sumSquares += value * value;
       low = min(low, value);
@@ -146,6 +154,7 @@ void main() {
   // history grows: a converged pixel is barely blurred, so the blur that feeds back into the
   // history through the first a-trous iteration cannot build up into bias.
   imageStore(filterAImage, pixel, vec4(integrated, variance / (historyLength * historyLength)));
-  imageStore(momentsNextImage, pixel, vec4(moments, historyLength, 0.0));
+  float penumbra = penumbraSamples > 0.0 ? penumbraSum / penumbraSamples : -1.0;
+  imageStore(momentsNextImage, pixel, vec4(moments, historyLength, penumbra));
   imageStore(historyNextImage, pixel, vec4(integrated, 0.0));
 }

@@ -2,6 +2,7 @@
 #define PAYLOAD_SURFACE 0
 #define PAYLOAD_SHADOW 1
 #define PAYLOAD_GLASS 2
+#define PAYLOAD_BLOCKER 3  // a soft shadow ray's, with the hit shader run for the caster it met
 #define MISS_SURFACE 0
 #define MISS_SHADOW 1
 #define MISS_GLASS 2

@@ -466,3 +466,37 @@ TEST_F(SoftShadowTest, the_shared_memory_tile_and_per_pixel_reads_denoise_alike)
   EXPECT_EQ(differing, 0u);
   EXPECT_GT(penumbra, 20u);  // the comparison covers filtered pixels, not only uniform ones
 }
+
+TEST_F(SoftShadowTest, a_blocked_sample_reports_the_penumbra_width_in_pixels) {
+  // The floor beside the slab: a sample that met the slab's underside (0.475 m up) carries the
+  // width of the penumbra there, 2 r dB / (dL - dB) by similar triangles, in pixels at the
+  // floor's distance; a sample that reached the light carries none (below 0).
+  constexpr float kRadius = 0.4f;
+  const scene::LightDesc light = sphereLight(kRadius);
+  auto renderer = makeRenderer(slabScene(light));
+  renderer->renderFrame(frameAt(0));
+  const auto raw = renderer->readDenoiser(DenoiserImage::RawVisibility);
+  const float tanHalfFov = std::tan(glm::radians(35.0f));
+  const glm::vec3 camera = topCamera().position;
+  size_t checked = 0;
+  for (uint32_t y = 0; y < kSize; ++y) {
+    for (uint32_t x = 0; x < kSize; ++x) {
+      const glm::vec4& texel = raw[y * kSize + x];
+      ASSERT_EQ(texel.r == 0.0f, texel.a >= 0.0f) << x << "," << y;  // one sample a pixel
+      if (texel.a < 0.0f) continue;
+      // Where the pixel's ray meets the floor (the view is symmetric in z, so its sign does
+      // not matter), unless it sees the slab's top.
+      const glm::vec2 ndc = (glm::vec2(x, y) + 0.5f) / float(kSize) * 2.0f - 1.0f;
+      const glm::vec3 floorPoint(camera.y * ndc.x * tanHalfFov, 0.0f,
+                                 camera.y * ndc.y * tanHalfFov);
+      if (std::abs(floorPoint.x) < 0.47f && std::abs(floorPoint.z) < 0.47f) continue;
+      const float toLight = glm::length(light.position - floorPoint);
+      const float blocker = 0.475f * toLight / light.position.y;
+      const float width = 2.0f * kRadius * blocker / (toLight - kRadius - blocker);
+      const float pixelSize = glm::length(floorPoint - camera) * 2.0f * tanHalfFov / kSize;
+      EXPECT_NEAR(texel.a, width / pixelSize, 0.25f * width / pixelSize) << x << "," << y;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 20u);
+}
