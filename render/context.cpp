@@ -336,11 +336,13 @@ Context::Context(const ContextOptions& options) : options_(options) {
     vkGetPhysicalDeviceFeatures2(physicalDevice_, &features);
     if (!vulkan12.bufferDeviceAddress || !structureFeatures.accelerationStructure ||
         !pipelineFeatures.rayTracingPipeline || !vulkan12.runtimeDescriptorArray ||
-        !vulkan12.shaderSampledImageArrayNonUniformIndexing) {
+        !vulkan12.shaderSampledImageArrayNonUniformIndexing ||
+        !features.features.shaderStorageImageExtendedFormats) {
       throw RenderError(deviceInfo_.name +
                         " lacks a feature Sightline needs (bufferDeviceAddress, "
                         "accelerationStructure, rayTracingPipeline, runtimeDescriptorArray, "
-                        "shaderSampledImageArrayNonUniformIndexing)");
+                        "shaderSampledImageArrayNonUniformIndexing, "
+                        "shaderStorageImageExtendedFormats)");
     }
     VkPhysicalDeviceRayTracingPipelineFeaturesKHR enablePipeline{
         VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR};
@@ -356,6 +358,7 @@ Context::Context(const ContextOptions& options) : options_(options) {
     enable12.scalarBlockLayout = vulkan12.scalarBlockLayout;
     VkPhysicalDeviceFeatures2 enable{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &enable12};
     enable.features.shaderInt64 = features.features.shaderInt64;
+    enable.features.shaderStorageImageExtendedFormats = VK_TRUE;  // the denoiser's rg32ui images
 
     std::vector<const char*> extensions(kRayTracingExtensions.begin(), kRayTracingExtensions.end());
     for (const std::string& name : requiredExtensions) extensions.push_back(name.c_str());

@@ -1,5 +1,9 @@
 #include "render/denoiser.hpp"
 
+#include <cstddef>
+
+#include <glm/gtc/packing.hpp>
+
 #include "render/barriers.hpp"
 #include "render/buffer.hpp"
 #include "render/context.hpp"
@@ -56,15 +60,23 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   // Inf times a visibility of 0 is NaN).
   softLight_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "soft light");
   visibilityRaw_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "raw visibility");
-  motion_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "motion");
+  // On GPUs the passes are limited by memory traffic, so what tolerates fewer bits has them
+  // (docs/PERFORMANCE.md, session 12). The motion (an offset of a few pixels in half floats and
+  // a distance) and the surface (a normal in two 16-bit numbers and a distance) take 8 bytes;
+  // the distances stay full floats, since half floats end at 65504 and a level may be large.
+  // The moments steer the filter: half floats. The history (the estimate, and its length in
+  // alpha) keeps full floats: a running average in half floats moves in steps of 1/2048 near 1
+  // (07's error after 32 frames 9 % worse), and a reference accumulation counts past half
+  // float's 2048 exact integers.
+  motion_ = make(VK_FORMAT_R32G32_UINT, "motion");
   filterA_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter ping");
   filterB_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter pong");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
-    surface_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("surface" + suffix).c_str());
+    surface_[parity] = make(VK_FORMAT_R32G32_UINT, ("surface" + suffix).c_str());
     instance_[parity] = make(VK_FORMAT_R32_UINT, ("instance" + suffix).c_str());
     history_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("history" + suffix).c_str());
-    moments_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("moments" + suffix).c_str());
+    moments_[parity] = make(VK_FORMAT_R16G16B16A16_SFLOAT, ("moments" + suffix).c_str());
   }
   // Start with an empty history: length 0 everywhere, whatever the memory held.
   for (int parity = 0; parity < 2; ++parity)
@@ -148,8 +160,15 @@ const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
 
 std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
                                       uint32_t iterations) const {
-  const bool halfFloats = which == DenoiserImage::RawVisibility || which == DenoiserImage::Denoised;
-  return readTexels(context_, imageFor(which, parity, iterations), halfFloats);
+  const bool halfFloats = which != DenoiserImage::SoftLight;
+  std::vector<glm::vec4> texels =
+      readTexels(context_, imageFor(which, parity, iterations), halfFloats);
+  if (which == DenoiserImage::Moments) {
+    // The history length as the history holds it, in full floats.
+    const std::vector<glm::vec4> history = readTexels(context_, *history_[parity & 1u], false);
+    for (size_t i = 0; i < texels.size(); ++i) texels[i].z = history[i].a;
+  }
+  return texels;
 }
 
 void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,
@@ -157,7 +176,9 @@ void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,
   const uint32_t previous = (nextParity & 1u) ^ 1u;
   context_.submitAndWait([&](VkCommandBuffer commands) {
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    for (const auto& [image, value] : {std::pair{history_[previous]->image(), history},
+    // The history holds its length in alpha.
+    const glm::vec4 historyTexel(glm::vec3(history), moments.z);
+    for (const auto& [image, value] : {std::pair{history_[previous]->image(), historyTexel},
                                        std::pair{moments_[previous]->image(), moments}}) {
       layoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
@@ -180,10 +201,15 @@ void Denoiser::writeHistoryTexel(uint32_t nextParity, uint32_t x, uint32_t y,
                                  const glm::vec4& history, const glm::vec4& moments) const {
   if (x >= width_ || y >= height_) throw RenderError("writeHistoryTexel: pixel outside the image");
   const uint32_t previous = (nextParity & 1u) ^ 1u;
-  const glm::vec4 values[2] = {history, moments};
-  Buffer staging(context_, sizeof values, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+  // In the images' formats: the history full floats with its length in alpha, then the moments
+  // half floats.
+  struct {
+    glm::vec4 history;
+    uint64_t moments;
+  } texels{glm::vec4(glm::vec3(history), moments.z), glm::packHalf4x16(moments)};
+  Buffer staging(context_, sizeof texels, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
                  "history texel");
-  staging.write(values, sizeof values);
+  staging.write(&texels, sizeof texels);
   context_.submitAndWait([&](VkCommandBuffer commands) {
     const VkImage images[2] = {history_[previous]->image(), moments_[previous]->image()};
     for (int i = 0; i < 2; ++i) {
@@ -191,7 +217,7 @@ void Denoiser::writeHistoryTexel(uint32_t nextParity, uint32_t x, uint32_t y,
           commands, images[i], VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
           VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
       VkBufferImageCopy region{};
-      region.bufferOffset = VkDeviceSize(i) * sizeof(glm::vec4);
+      region.bufferOffset = i == 0 ? 0 : offsetof(decltype(texels), moments);
       region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
       region.imageOffset = {int32_t(x), int32_t(y), 0};
       region.imageExtent = {1, 1, 1};

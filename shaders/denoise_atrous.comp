@@ -41,7 +41,7 @@ void main() {
   uint instance = 0u;
   vec4 moments = vec4(0.0);
   if (centre.a > 0.0) {
-    surface = imageLoad(surfaceImage, pixel);
+    surface = unpackSurface(imageLoad(surfaceImage, pixel).xy);
     instance = imageLoad(instanceImage, pixel).x;
     moments = imageLoad(momentsNextImage, pixel);
   }
@@ -66,7 +66,7 @@ void main() {
         ivec2 tap = pixel + ivec2(dx, dy) * iteration.stepSize;
         if (!insideImage(tap)) continue;
         if (imageLoad(instanceImage, tap).x != instance) continue;
-        vec4 tapSurface = imageLoad(surfaceImage, tap);
+        vec4 tapSurface = unpackSurface(imageLoad(surfaceImage, tap).xy);
         vec4 value = loadFiltered(tap);
         float weight = kernel[dx + 1] * kernel[dy + 1] *
                        exp(-abs(tapSurface.w - surface.w) / depthScale) *
@@ -92,5 +92,5 @@ void main() {
   // pass's own integration, already stored there, is kept.
   // A pixel without variance kept its value, which the history already holds.
   if (iteration.writeHistory != 0 && centre.a > 0.0 && moments.z < YOUNG_HISTORY_LENGTH)
-    imageStore(historyNextImage, pixel, vec4(result.rgb, 0.0));
+    imageStore(historyNextImage, pixel, vec4(result.rgb, moments.z));
 }

@@ -67,7 +67,7 @@ void main() {
   bool reset = frame.denoise.x != 0u;
   bool reference = frame.denoise.y != 0u;
   vec3 current = neighbourSample(ivec2(0)).rgb;
-  vec4 surface = imageLoad(surfaceImage, pixel);
+  vec4 surface = unpackSurface(imageLoad(surfaceImage, pixel).xy);
   uint instance = imageLoad(instanceImage, pixel).x;
 
   vec3 sum = vec3(0.0), sumSquares = vec3(0.0);
@@ -99,9 +99,9 @@ void main() {
   vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
   float historyLength = 0.0;
   float historyCap = MAX_HISTORY_LENGTH;
-  vec4 motion = imageLoad(motionImage, pixel);
+  vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
   if (!reset && surface.w >= 0.0 && motion.z >= 0.0) {
-    vec2 previous = reference ? vec2(pixel) : motion.xy;
+    vec2 previous = reference ? vec2(pixel) : vec2(pixel) + motion.xy;
     float expectedDistance = reference ? surface.w : motion.z;
     ivec2 base = ivec2(floor(previous));
     vec2 f = previous - vec2(base);
@@ -115,15 +115,16 @@ void main() {
         float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         if (weight <= 0.0) continue;
         if (imageLoad(instancePreviousImage, tap).x != instance) continue;
-        vec4 previousSurface = imageLoad(surfacePreviousImage, tap);
+        vec4 previousSurface = unpackSurface(imageLoad(surfacePreviousImage, tap).xy);
         if (abs(previousSurface.w - expectedDistance) > RELATIVE_DEPTH_TOLERANCE * expectedDistance)
           continue;
         if (dot(previousSurface.xyz, surface.xyz) < NORMAL_COSINE_TOLERANCE) continue;
-        vec3 tapHistory = imageLoad(historyImage, tap).rgb;
-        vec3 tapMoments = imageLoad(momentsImage, tap).xyz;
-        if (!isFinite(tapHistory) || !isFinite(tapMoments)) continue;  // never let NaN in
-        historySum += weight * tapHistory;
-        momentsSum += weight * tapMoments;
+        vec4 tapHistory = imageLoad(historyImage, tap);  // the estimate and its length
+        vec2 tapMoments = imageLoad(momentsImage, tap).xy;
+        if (!isFinite(tapHistory.rgb) || !isFinite(vec3(tapMoments, tapHistory.a)))
+          continue;  // never let NaN in
+        historySum += weight * tapHistory.rgb;
+        momentsSum += weight * vec3(tapMoments, tapHistory.a);
         weightSum += weight;
       }
     }
@@ -155,6 +156,9 @@ void main() {
   // history through the first a-trous iteration cannot build up into bias.
   imageStore(filterAImage, pixel, vec4(integrated, variance / (historyLength * historyLength)));
   float penumbra = penumbraSamples > 0.0 ? penumbraSum / penumbraSamples : -1.0;
-  imageStore(momentsNextImage, pixel, vec4(moments, historyLength, penumbra));
-  imageStore(historyNextImage, pixel, vec4(integrated, 0.0));
+  // The moments' length (half floats) serves the a-trous passes' test for a young history; the
+  // next frame counts on the history's own, in full floats.
+  imageStore(momentsNextImage, pixel,
+             vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra));
+  imageStore(historyNextImage, pixel, vec4(integrated, historyLength));
 }

@@ -3,18 +3,60 @@ layout(set = 0, binding = BINDING_HDR_IMAGE, rgba32f) uniform image2D hdrImage;
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D outputImage;
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
 #ifdef DENOISER_BINDINGS
-// Soft-shadow inputs written by ray-gen and the denoiser's own images.
+// Soft-shadow inputs written by ray-gen and the denoiser's own images. On GPUs the denoiser's
+// passes are limited by memory traffic, so what tolerates fewer bits has them (the formats are
+// explained in render/denoiser.cpp).
+const float HALF_FLOAT_MAX = 65504.0;
 layout(set = 0, binding = BINDING_SOFT_LIGHT, rgba32f) uniform image2D softLightImage;
 layout(set = 0, binding = BINDING_VISIBILITY_RAW, rgba16f) uniform image2D visibilityRawImage;
-layout(set = 0, binding = BINDING_SURFACE, rgba32f) uniform image2D surfaceImage;
-layout(set = 0, binding = BINDING_SURFACE_PREVIOUS, rgba32f) uniform image2D surfacePreviousImage;
+layout(set = 0, binding = BINDING_SURFACE, rg32ui) uniform uimage2D surfaceImage;
+layout(set = 0, binding = BINDING_SURFACE_PREVIOUS, rg32ui) uniform uimage2D surfacePreviousImage;
 layout(set = 0, binding = BINDING_INSTANCE, r32ui) uniform uimage2D instanceImage;
 layout(set = 0, binding = BINDING_INSTANCE_PREVIOUS, r32ui) uniform uimage2D instancePreviousImage;
-layout(set = 0, binding = BINDING_MOTION, rgba32f) uniform image2D motionImage;
+layout(set = 0, binding = BINDING_MOTION, rg32ui) uniform uimage2D motionImage;
 layout(set = 0, binding = BINDING_HISTORY, rgba32f) uniform image2D historyImage;
 layout(set = 0, binding = BINDING_HISTORY_NEXT, rgba32f) uniform image2D historyNextImage;
-layout(set = 0, binding = BINDING_MOMENTS, rgba32f) uniform image2D momentsImage;
-layout(set = 0, binding = BINDING_MOMENTS_NEXT, rgba32f) uniform image2D momentsNextImage;
+layout(set = 0, binding = BINDING_MOMENTS, rgba16f) uniform image2D momentsImage;
+layout(set = 0, binding = BINDING_MOMENTS_NEXT, rgba16f) uniform image2D momentsNextImage;
 layout(set = 0, binding = BINDING_FILTER_A, rgba16f) uniform image2D filterAImage;
 layout(set = 0, binding = BINDING_FILTER_B, rgba16f) uniform image2D filterBImage;
+
+// A unit vector as a point of the octahedron |x| + |y| + |z| = 1 unfolded onto the square
+// [-1, 1]^2: two numbers instead of three, evenly precise in every direction.
+vec2 octahedralFromUnit(vec3 direction) {
+  vec3 onOctahedron = direction / max(dot(abs(direction), vec3(1.0)), 1e-30);
+  vec2 signs = vec2(onOctahedron.x >= 0.0 ? 1.0 : -1.0, onOctahedron.y >= 0.0 ? 1.0 : -1.0);
+  return onOctahedron.z >= 0.0 ? onOctahedron.xy : (1.0 - abs(onOctahedron.yx)) * signs;
+}
+
+vec3 unitFromOctahedral(vec2 square) {
+  vec3 direction = vec3(square, 1.0 - abs(square.x) - abs(square.y));
+  float fold = max(-direction.z, 0.0);
+  direction.xy -= fold * vec2(direction.x >= 0.0 ? 1.0 : -1.0, direction.y >= 0.0 ? 1.0 : -1.0);
+  return normalize(direction);
+}
+
+// The surface image: the normal (octahedral, 16-bit signed normalized) and the distance along
+// the path (a full float: the depth tests are relative, at every scale a level may have); a
+// distance below 0 is the sky.
+uvec2 packSurface(vec3 normal, float pathLength) {
+  return uvec2(packSnorm2x16(octahedralFromUnit(normal)), floatBitsToUint(pathLength));
+}
+
+vec4 unpackSurface(uvec2 packed) {
+  return vec4(unitFromOctahedral(unpackSnorm2x16(packed.x)), uintBitsToFloat(packed.y));
+}
+
+// The motion image: where the point was in the previous frame as an offset from this pixel
+// (half floats: an offset of 64 pixels to 1/32 of one) and its distance then (a full float);
+// a distance below 0: nowhere.
+uvec2 packMotion(vec2 offset, float previousDistance) {
+  // Clamped: an offset past half float's range is off the image either way.
+  vec2 representable = clamp(offset, vec2(-HALF_FLOAT_MAX), vec2(HALF_FLOAT_MAX));
+  return uvec2(packHalf2x16(representable), floatBitsToUint(previousDistance));
+}
+
+vec3 unpackMotion(uvec2 packed) {
+  return vec3(unpackHalf2x16(packed.x), uintBitsToFloat(packed.y));
+}
 #endif
