@@ -1,6 +1,8 @@
 #include "render/denoiser.hpp"
 
 #include <cstddef>
+#include <initializer_list>
+#include <utility>
 
 #include <glm/gtc/packing.hpp>
 
@@ -29,6 +31,33 @@ void layoutBarrier(VkCommandBuffer commands, VkImage image, VkImageLayout from, 
                    VkAccessFlags srcAccess, VkAccessFlags dstAccess) {
   imageLayoutBarrier(commands, image, from, to, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, srcAccess,
                      VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, dstAccess);
+}
+
+VkClearColorValue colorOf(const glm::vec4& value) {
+  VkClearColorValue color{};
+  color.float32[0] = value.x;
+  color.float32[1] = value.y;
+  color.float32[2] = value.z;
+  color.float32[3] = value.w;
+  return color;
+}
+
+// Fills each image (kept in GENERAL, created with TRANSFER_DST usage) with its colour; waits.
+void clearImages(const Context& context,
+                 std::initializer_list<std::pair<VkImage, VkClearColorValue>> images) {
+  context.submitAndWait([&](VkCommandBuffer commands) {
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    for (const auto& [image, color] : images) {
+      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT);
+      vkCmdClearColorImage(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1,
+                           &range);
+      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                    VK_ACCESS_TRANSFER_WRITE_BIT,
+                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    }
+  });
 }
 
 }  // namespace
@@ -78,6 +107,19 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
     history_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("history" + suffix).c_str());
     moments_[parity] = make(VK_FORMAT_R16G16B16A16_SFLOAT, ("moments" + suffix).c_str());
   }
+  filterTiles_ = std::make_unique<StorageImage>(
+      context, (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize,
+      VK_FORMAT_R32_UINT, VK_IMAGE_USAGE_TRANSFER_DST_BIT, "filter tiles");
+  clearImages(context, {{filterTiles_->image(), VkClearColorValue{}}});
+  const VkDeviceSize tileCount = VkDeviceSize(filterTiles_->width()) * filterTiles_->height();
+  filterTileList_ = Buffer(context, sizeof(VkDispatchIndirectCommand) + 4 * tileCount,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           MemoryUse::DeviceOnly, "filter tile list");
+  context.submitAndWait([&](VkCommandBuffer commands) {  // y and z of the dispatch: 1
+    vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, y),
+                    2 * sizeof(uint32_t), 1u);
+  });
   // Start with an empty history: length 0 everywhere, whatever the memory held.
   for (int parity = 0; parity < 2; ++parity)
     fillHistory(uint32_t(parity), glm::vec4(1.0f), glm::vec4(0.0f));
@@ -105,6 +147,7 @@ std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity
       {BINDING_MOMENTS_NEXT, moments_[current]->view()},
       {BINDING_FILTER_A, filterA_->view()},
       {BINDING_FILTER_B, filterB_->view()},
+      {BINDING_FILTER_TILES, filterTiles_->view()},
   };
 }
 
@@ -127,20 +170,37 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
 }
 
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-                      uint32_t iterations) const {
-  const uint32_t groupsX = (width_ + kGroupSize - 1) / kGroupSize,
-                 groupsY = (height_ + kGroupSize - 1) / kGroupSize;
+                      uint32_t iterations) {
+  // The temporal pass lists the work-groups with something to filter, from an empty list.
+  memoryBarrier(commands, VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, x),
+                  sizeof(uint32_t), 0u);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  DenoiserPass pass{0, 0, 0, ++tileStamp_};
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
-  vkCmdDispatch(commands, groupsX, groupsY, 1);
+  vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
+  vkCmdDispatch(commands, filterTiles_->width(), filterTiles_->height(), 1);
+  memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT |
+                    VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, atrous_);
   for (uint32_t i = 0; i < iterations; ++i) {
-    computeBarrier(commands);
-    const AtrousIteration iteration{int32_t(1u << i), i % 2 == 0 ? 1 : 0, i == 0 ? 1 : 0};
-    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof iteration,
-                       &iteration);
-    vkCmdDispatch(commands, groupsX, groupsY, 1);
+    if (i > 0) computeBarrier(commands);
+    pass.stepSize = int32_t(1u << i);
+    pass.readFromA = i % 2 == 0 ? 1 : 0;
+    pass.writeHistory = i == 0 ? 1 : 0;
+    vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
+    vkCmdDispatchIndirect(commands, filterTileList_.handle(), 0);
   }
+}
+
+std::vector<std::pair<uint32_t, const Buffer*>> Denoiser::bufferBindings() const {
+  return {{BINDING_FILTER_TILE_LIST, &filterTileList_}};
 }
 
 const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
@@ -174,27 +234,10 @@ std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
 void Denoiser::fillHistory(uint32_t nextParity, const glm::vec4& history,
                            const glm::vec4& moments) const {
   const uint32_t previous = (nextParity & 1u) ^ 1u;
-  context_.submitAndWait([&](VkCommandBuffer commands) {
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    // The history holds its length in alpha.
-    const glm::vec4 historyTexel(glm::vec3(history), moments.z);
-    for (const auto& [image, value] : {std::pair{history_[previous]->image(), historyTexel},
-                                       std::pair{moments_[previous]->image(), moments}}) {
-      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT,
-                    VK_ACCESS_TRANSFER_WRITE_BIT);
-      VkClearColorValue color{};
-      color.float32[0] = value.x;
-      color.float32[1] = value.y;
-      color.float32[2] = value.z;
-      color.float32[3] = value.w;
-      vkCmdClearColorImage(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &color, 1,
-                           &range);
-      layoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_ACCESS_TRANSFER_WRITE_BIT,
-                    VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-    }
-  });
+  // The history holds its length in alpha.
+  const glm::vec4 historyTexel(glm::vec3(history), moments.z);
+  clearImages(context_, {{history_[previous]->image(), colorOf(historyTexel)},
+                         {moments_[previous]->image(), colorOf(moments)}});
 }
 
 void Denoiser::writeHistoryTexel(uint32_t nextParity, uint32_t x, uint32_t y,

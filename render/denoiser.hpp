@@ -9,6 +9,7 @@
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
 
+#include "render/buffer.hpp"
 #include "render/storage_image.hpp"
 
 namespace render {
@@ -40,14 +41,16 @@ class Denoiser {
   // Storage images by binding for frame parity 0 or 1: "previous" bindings get the other
   // parity's images, so nothing is copied between frames.
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
+  // Storage buffers by binding (the same for both parities).
+  std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
 
   // `reads`: Auto picks the shared-memory tile on GPUs and per-pixel reads on CPU drivers.
   void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout, NeighbourhoodReads reads);
 
   // Temporal pass then `iterations` a-trous passes; the caller has ordered ray-gen's writes
-  // before and orders the tonemap's reads after.
+  // before and orders the tonemap's reads after. Each call stamps a new frame.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t iterations) const;
+              uint32_t iterations);
 
   // Test and debugging hooks (they submit and wait).
   std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
@@ -63,16 +66,22 @@ class Denoiser {
   const Context& context_;
   uint32_t width_, height_;
   std::unique_ptr<StorageImage> softLight_, visibilityRaw_, motion_, filterA_, filterB_;
+  // One texel per work-group: the stamp of the last frame that left it something to filter;
+  // and this frame's list of those work-groups, the a-trous iterations' indirect dispatch.
+  std::unique_ptr<StorageImage> filterTiles_;
+  Buffer filterTileList_;
+  uint32_t tileStamp_ = 0;  // the images start at 0; the first frame stamps 1
   std::array<std::unique_ptr<StorageImage>, 2> surface_, instance_, history_, moments_;
   VkPipeline temporal_ = VK_NULL_HANDLE;
   VkPipeline atrous_ = VK_NULL_HANDLE;
 };
 
-// Push constants of one a-trous iteration (matches denoise_atrous.comp).
-struct AtrousIteration {
+// Push constants of the denoiser's passes (matches denoise_common.glsl).
+struct DenoiserPass {
   int32_t stepSize;
   int32_t readFromA;
   int32_t writeHistory;
+  uint32_t tileStamp;
 };
 
 VkPipeline createComputePipeline(const Context& context, VkPipelineLayout layout,

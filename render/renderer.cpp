@@ -379,6 +379,12 @@ void Renderer::createDescriptors() {
     layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1, kAllStages, nullptr});
     poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kSets});
   }
+  std::vector<std::pair<uint32_t, const Buffer*>> passBuffers;
+  if (denoiser_) passBuffers = denoiser_->bufferBindings();
+  for (const auto& [binding, buffer] : passBuffers) {
+    layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr});
+    poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSets});
+  }
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = static_cast<uint32_t>(layoutBindings.size());
   layoutInfo.pBindings = layoutBindings.data();
@@ -432,8 +438,10 @@ void Renderer::createDescriptors() {
     std::vector<VkDescriptorImageInfo> imageInfos;
     for (const auto& [binding, view] : storageImages)
       imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+    std::vector<std::pair<uint32_t, const Buffer*>> allBuffers(buffers.begin(), buffers.end());
+    allBuffers.insert(allBuffers.end(), passBuffers.begin(), passBuffers.end());
     std::vector<VkDescriptorBufferInfo> bufferInfos;
-    for (const auto& [binding, buffer] : buffers)
+    for (const auto& [binding, buffer] : allBuffers)
       bufferInfos.push_back({buffer->handle(), 0, VK_WHOLE_SIZE});
     std::vector<VkWriteDescriptorSet> writes;
     auto write = [&](uint32_t binding, VkDescriptorType type, uint32_t count) {
@@ -451,18 +459,18 @@ void Renderer::createDescriptors() {
       writes[write(storageImages[i].first, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1)].pImageInfo =
           &imageInfos[i];
     }
-    for (size_t i = 0; i < buffers.size(); ++i) {
-      const VkDescriptorType type = buffers[i].first == BINDING_FRAME
+    for (size_t i = 0; i < allBuffers.size(); ++i) {
+      const VkDescriptorType type = allBuffers[i].first == BINDING_FRAME
                                         ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
                                         : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-      writes[write(buffers[i].first, type, 1)].pBufferInfo = &bufferInfos[i];
+      writes[write(allBuffers[i].first, type, 1)].pBufferInfo = &bufferInfos[i];
     }
     writes[write(BINDING_TEXTURES, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, textureCount)]
         .pImageInfo = textureInfos.data();
     vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
   }
 
-  const VkPushConstantRange pushConstants{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(AtrousIteration)};
+  const VkPushConstantRange pushConstants{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(DenoiserPass)};
   VkPipelineLayoutCreateInfo pipelineLayoutInfo{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   pipelineLayoutInfo.setLayoutCount = 1;
   pipelineLayoutInfo.pSetLayouts = &setLayout_;

@@ -8,11 +8,6 @@
 // One edge-avoiding a-trous iteration (3x3 taps spaced `stepSize` apart), stopped by depth,
 // normal, instance and visibility differences scaled by the estimated variance. Weighted
 // differences from the centre keep uniform regions exactly as they are (fully lit stays 1).
-layout(push_constant) uniform Iteration {
-  int stepSize;
-  int readFromA;      // 1: A -> B, 0: B -> A
-  int writeHistory;   // the first iteration's output is the next frame's history
-} iteration;
 
 const float YOUNG_HISTORY_LENGTH = 4.0;
 // An iteration filters a pixel fully while its tap spacing is at most this many times the
@@ -23,12 +18,16 @@ const float YOUNG_HISTORY_LENGTH = 4.0;
 const float PENUMBRA_STEP_SCALE = 2.0;
 
 vec4 loadFiltered(ivec2 pixel) {
-  return iteration.readFromA != 0 ? imageLoad(filterAImage, pixel)
+  return pass.readFromA != 0 ? imageLoad(filterAImage, pixel)
                                   : imageLoad(filterBImage, pixel);
 }
 
 void main() {
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  // Dispatched for the work-groups the temporal pass listed: one where no pixel has variance
+  // stays as that pass left it, in both filter images.
+  uint tile = filterTiles[gl_WorkGroupID.x];
+  ivec2 pixel = ivec2(uvec2(tile & 0xffffu, tile >> 16) * gl_WorkGroupSize.xy +
+                      gl_LocalInvocationID.xy);
   if (!insideImage(pixel)) return;
   vec4 centre = loadFiltered(pixel);
   vec4 result = centre;
@@ -49,21 +48,21 @@ void main() {
   // shadow's edge is sharp, and samples across it are not noise to average away.
   float withinPenumbra =
       moments.w >= 0.0
-          ? clamp(PENUMBRA_STEP_SCALE * moments.w / float(iteration.stepSize), 0.0, 1.0)
+          ? clamp(PENUMBRA_STEP_SCALE * moments.w / float(pass.stepSize), 0.0, 1.0)
           : 1.0;
   if (surface.w >= 0.0 && centre.a > 0.0 && withinPenumbra > 0.0) {
     const float kernel[3] = float[3](0.25, 0.5, 0.25);
     float centreLuminance = luminance(centre.rgb);
     float luminanceScale = 4.0 * sqrt(max(centre.a, 0.0)) + 1e-4;
     // Relative to the distance, so the filter behaves the same at every scale of the level.
-    float depthScale = max(0.02 * surface.w * float(iteration.stepSize), 1e-30);
+    float depthScale = max(0.02 * surface.w * float(pass.stepSize), 1e-30);
     float weightSum = kernel[1] * kernel[1];
     vec3 differenceSum = vec3(0.0);
     float varianceSum = weightSum * weightSum * centre.a;
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         if (dx == 0 && dy == 0) continue;
-        ivec2 tap = pixel + ivec2(dx, dy) * iteration.stepSize;
+        ivec2 tap = pixel + ivec2(dx, dy) * pass.stepSize;
         if (!insideImage(tap)) continue;
         if (imageLoad(instanceImage, tap).x != instance) continue;
         vec4 tapSurface = unpackSurface(imageLoad(surfaceImage, tap).xy);
@@ -80,7 +79,8 @@ void main() {
     result = vec4(clamp(centre.rgb + withinPenumbra * differenceSum / weightSum, 0.0, 1.0),
                   mix(centre.a, varianceSum / (weightSum * weightSum), withinPenumbra));
   }
-  if (iteration.readFromA != 0) {
+  if (centre.a == 0.0) return;  // kept its value, which both images hold
+  if (pass.readFromA != 0) {
     imageStore(filterBImage, pixel, result);
   } else {
     imageStore(filterAImage, pixel, result);
@@ -91,6 +91,6 @@ void main() {
   // frames, visibility RMSE 0.0095 with the feedback, 0.0050 without), so the temporal
   // pass's own integration, already stored there, is kept.
   // A pixel without variance kept its value, which the history already holds.
-  if (iteration.writeHistory != 0 && centre.a > 0.0 && moments.z < YOUNG_HISTORY_LENGTH)
+  if (pass.writeHistory != 0 && centre.a > 0.0 && moments.z < YOUNG_HISTORY_LENGTH)
     imageStore(historyNextImage, pixel, vec4(result.rgb, moments.z));
 }

@@ -4,6 +4,22 @@
 #endif
 layout(local_size_x = DENOISER_GROUP_SIZE, local_size_y = DENOISER_GROUP_SIZE) in;
 
+// Push constants of the passes (render::DenoiserPass).
+layout(push_constant) uniform Pass {
+  int stepSize;      // a-trous: the taps' spacing
+  int readFromA;     // a-trous: 1: A -> B, 0: B -> A
+  int writeHistory;  // a-trous: the first iteration's output is the next frame's history
+  // This frame's stamp: the temporal pass writes it into filterTilesImage for each work-group
+  // that holds a pixel with variance, and lists that work-group once for the a-trous iterations
+  // (the other work-groups they leave alone).
+  uint tileStamp;
+} pass;
+
+// Below this variance the temporal pass writes its output to both filter images: it may read
+// back as 0 from a half float (whichever rounding, denormals flushed or not), and an a-trous
+// iteration neither changes nor stores a pixel of variance 0.
+const float UNFILTERED_VARIANCE_BOUND = 1.0e-4;
+
 float luminance(vec3 rgb) { return dot(rgb, vec3(0.2126, 0.7152, 0.0722)); }
 
 bool isFinite(vec3 v) { return !any(isnan(v)) && !any(isinf(v)); }

@@ -1,5 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#extension GL_KHR_shader_subgroup_vote : require
 #include "shared_types.h"
 #define DENOISER_BINDINGS
 #include "frame_bindings.glsl"
@@ -154,7 +155,16 @@ void main() {
   // The spatial filter steers by the variance of the integrated estimate, which falls as the
   // history grows: a converged pixel is barely blurred, so the blur that feeds back into the
   // history through the first a-trous iteration cannot build up into bias.
-  imageStore(filterAImage, pixel, vec4(integrated, variance / (historyLength * historyLength)));
+  float filterVariance = variance / (historyLength * historyLength);
+  vec4 filterInput = vec4(integrated, filterVariance);
+  imageStore(filterAImage, pixel, filterInput);
+  if (filterVariance < UNFILTERED_VARIANCE_BOUND) imageStore(filterBImage, pixel, filterInput);
+  // NaN counts as variance: the a-trous iterations store such a pixel.
+  if (subgroupAny(filterVariance != 0.0) && subgroupElect()) {
+    uvec2 tile = gl_WorkGroupID.xy;
+    if (imageAtomicExchange(filterTilesImage, ivec2(tile), pass.tileStamp) != pass.tileStamp)
+      filterTiles[atomicAdd(dispatchGroups[0], 1u)] = tile.x | tile.y << 16;
+  }
   float penumbra = penumbraSamples > 0.0 ? penumbraSum / penumbraSamples : -1.0;
   // The moments' length (half floats) serves the a-trous passes' test for a young history; the
   // next frame counts on the history's own, in full floats.

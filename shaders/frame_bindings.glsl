@@ -20,6 +20,11 @@ layout(set = 0, binding = BINDING_MOMENTS, rgba16f) uniform image2D momentsImage
 layout(set = 0, binding = BINDING_MOMENTS_NEXT, rgba16f) uniform image2D momentsNextImage;
 layout(set = 0, binding = BINDING_FILTER_A, rgba16f) uniform image2D filterAImage;
 layout(set = 0, binding = BINDING_FILTER_B, rgba16f) uniform image2D filterBImage;
+layout(set = 0, binding = BINDING_FILTER_TILES, r32ui) uniform uimage2D filterTilesImage;
+layout(set = 0, binding = BINDING_FILTER_TILE_LIST, std430) buffer FilterTileList {
+  uint dispatchGroups[3];
+  uint filterTiles[];
+};
 
 // A unit vector as a point of the octahedron |x| + |y| + |z| = 1 unfolded onto the square
 // [-1, 1]^2: two numbers instead of three, evenly precise in every direction.

@@ -53,6 +53,12 @@ using uint = uint32_t;
 #define BINDING_UPSCALE_INSTANCE 31       // r32ui: instance + 1 the history shows (prev.; 0: none)
 #define BINDING_UPSCALE_INSTANCE_NEXT 32  // this frame's
 #define BINDING_DISPLAY_IMAGE 33          // rgba8: the upscaled picture, sRGB-encoded
+// r32ui, one texel per denoiser work-group: the stamp of the last frame whose temporal pass left
+// a pixel there with variance for the a-trous iterations to filter.
+#define BINDING_FILTER_TILES 34
+// A storage buffer: the a-trous iterations' indirect dispatch (x, y, z work-groups), then one
+// entry per work-group the temporal pass left something to filter (x | y << 16).
+#define BINDING_FILTER_TILE_LIST 35
 // The most frames the upscaler's history averages (in expected sample weight): a static view
 // has converged after about this many frames.
 #define UPSCALE_MAX_HISTORY_FRAMES 32.0
