@@ -112,10 +112,11 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
       VK_FORMAT_R32_UINT, VK_IMAGE_USAGE_TRANSFER_DST_BIT, "filter tiles");
   clearImages(context, {{filterTiles_->image(), VkClearColorValue{}}});
   const VkDeviceSize tileCount = VkDeviceSize(filterTiles_->width()) * filterTiles_->height();
-  filterTileList_ = Buffer(context, sizeof(VkDispatchIndirectCommand) + 4 * tileCount,
-                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
-                               VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                           MemoryUse::DeviceOnly, "filter tile list");
+  filterTileList_ =
+      Buffer(context, sizeof(VkDispatchIndirectCommand) + 4 * tileCount,
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                 VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+             MemoryUse::DeviceOnly, "filter tile list");
   context.submitAndWait([&](VkCommandBuffer commands) {  // y and z of the dispatch: 1
     vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, y),
                     2 * sizeof(uint32_t), 1u);
@@ -172,8 +173,9 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
                       uint32_t iterations) {
   // The temporal pass lists the work-groups with something to filter, from an empty list.
-  memoryBarrier(commands, VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  memoryBarrier(commands,
+                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, x),
                   sizeof(uint32_t), 0u);
   memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -184,10 +186,10 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
   vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
   vkCmdDispatch(commands, filterTiles_->width(), filterTiles_->height(), 1);
-  memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT |
-                    VK_ACCESS_SHADER_WRITE_BIT);
+  memoryBarrier(
+      commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+      VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+      VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, atrous_);
   for (uint32_t i = 0; i < iterations; ++i) {
     if (i > 0) computeBarrier(commands);
