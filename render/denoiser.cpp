@@ -81,7 +81,10 @@ VkPipeline createComputePipeline(const Context& context, VkPipelineLayout layout
 }
 
 Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
-    : context_(context), width_(width), height_(height) {
+    : context_(context),
+      width_(width),
+      height_(height),
+      groupSize_(context.isCpuDevice() ? kCpuGroupSize : kGpuGroupSize) {
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
@@ -108,7 +111,7 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
     moments_[parity] = make(VK_FORMAT_R16G16B16A16_SFLOAT, ("moments" + suffix).c_str());
   }
   filterTiles_ = std::make_unique<StorageImage>(
-      context, (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize,
+      context, (width + groupSize_ - 1) / groupSize_, (height + groupSize_ - 1) / groupSize_,
       VK_FORMAT_R32_UINT, VK_IMAGE_USAGE_TRANSFER_DST_BIT, "filter tiles");
   clearImages(context, {{filterTiles_->image(), VkClearColorValue{}}});
   const VkDeviceSize tileCount = VkDeviceSize(filterTiles_->width()) * filterTiles_->height();
@@ -156,7 +159,7 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
                                NeighbourhoodReads reads) {
   const bool tile = reads == NeighbourhoodReads::Tile ||
                     (reads == NeighbourhoodReads::Auto && !context_.isCpuDevice());
-  const std::string group = std::to_string(kGroupSize);
+  const std::string group = std::to_string(groupSize_);
   temporal_ = createComputePipeline(
       context_, layout,
       compiler

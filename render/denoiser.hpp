@@ -29,9 +29,12 @@ enum class NeighbourhoodReads { Auto, Tile, PerPixel };
 
 class Denoiser {
  public:
-  // Its passes run in work-groups of kGroupSize x kGroupSize pixels: on the H100 at 3840x2160
-  // 16 took 0.51-0.65 ms where 8 took 0.58-0.68 and 32 0.70-0.86; lavapipe is indifferent.
-  static constexpr uint32_t kGroupSize = 16;
+  // Its passes run in square work-groups, and the a-trous iterations only on those with
+  // something to filter. On the H100 at 3840x2160 (02 / 06 / 07) 8x8 took 0.54 / 0.41 / 0.39 ms
+  // where 16x16 took 0.57 / 0.43 / 0.40 (before the iterations skipped work-groups, 16 was the
+  // fastest, 32 the slowest); on lavapipe 8 was no faster (docs/PERFORMANCE.md, session 13).
+  static constexpr uint32_t kGpuGroupSize = 8;
+  static constexpr uint32_t kCpuGroupSize = 16;
 
   Denoiser(const Context& context, uint32_t width, uint32_t height);
   ~Denoiser();
@@ -65,6 +68,7 @@ class Denoiser {
 
   const Context& context_;
   uint32_t width_, height_;
+  uint32_t groupSize_;  // kGpuGroupSize or kCpuGroupSize
   std::unique_ptr<StorageImage> softLight_, visibilityRaw_, motion_, filterA_, filterB_;
   // One texel per work-group: the stamp of the last frame that left it something to filter;
   // and this frame's list of those work-groups, the a-trous iterations' indirect dispatch.

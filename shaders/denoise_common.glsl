@@ -1,5 +1,5 @@
 // Shared by the denoiser passes.
-#ifndef DENOISER_GROUP_SIZE  // the renderer defines it (Denoiser::kGroupSize)
+#ifndef DENOISER_GROUP_SIZE  // the renderer defines it (Denoiser::kGpuGroupSize, kCpuGroupSize)
 #define DENOISER_GROUP_SIZE 16
 #endif
 layout(local_size_x = DENOISER_GROUP_SIZE, local_size_y = DENOISER_GROUP_SIZE) in;
