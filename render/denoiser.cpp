@@ -60,6 +60,12 @@ void clearImages(const Context& context,
   });
 }
 
+// The start of the filter tile list (FilterTileList in frame_bindings.glsl).
+struct FilterTileListHeader {
+  VkDispatchIndirectCommand dispatch;
+  uint32_t listedTiles;
+};
+
 }  // namespace
 
 VkPipeline createComputePipeline(const Context& context, VkPipelineLayout layout,
@@ -116,14 +122,10 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   clearImages(context, {{filterTiles_->image(), VkClearColorValue{}}});
   const VkDeviceSize tileCount = VkDeviceSize(filterTiles_->width()) * filterTiles_->height();
   filterTileList_ =
-      Buffer(context, sizeof(VkDispatchIndirectCommand) + 4 * tileCount,
+      Buffer(context, sizeof(FilterTileListHeader) + sizeof(uint32_t) * tileCount,
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                  VK_BUFFER_USAGE_TRANSFER_DST_BIT,
              MemoryUse::DeviceOnly, "filter tile list");
-  context.submitAndWait([&](VkCommandBuffer commands) {  // y and z of the dispatch: 1
-    vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, y),
-                    2 * sizeof(uint32_t), 1u);
-  });
   // Start with an empty history: length 0 everywhere, whatever the memory held.
   for (int parity = 0; parity < 2; ++parity)
     fillHistory(uint32_t(parity), glm::vec4(1.0f), glm::vec4(0.0f));
@@ -179,8 +181,8 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
   memoryBarrier(commands,
                 VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
                 VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  vkCmdFillBuffer(commands, filterTileList_.handle(), offsetof(VkDispatchIndirectCommand, x),
-                  sizeof(uint32_t), 0u);
+  const FilterTileListHeader empty{{0, 0, 1}, 0};
+  vkCmdUpdateBuffer(commands, filterTileList_.handle(), 0, sizeof empty, &empty);
   memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);

@@ -18,14 +18,16 @@ const float YOUNG_HISTORY_LENGTH = 4.0;
 const float PENUMBRA_STEP_SCALE = 2.0;
 
 vec4 loadFiltered(ivec2 pixel) {
-  return pass.readFromA != 0 ? imageLoad(filterAImage, pixel)
-                                  : imageLoad(filterBImage, pixel);
+  return pass.readFromA != 0 ? imageLoad(filterAImage, pixel) : imageLoad(filterBImage, pixel);
 }
 
 void main() {
   // Dispatched for the work-groups the temporal pass listed: one where no pixel has variance
   // stays as that pass left it, in both filter images.
-  uint tile = filterTiles[gl_WorkGroupID.x];
+  uint rowLength = (frame.sizeFrameLights.x + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
+  uint entry = gl_WorkGroupID.y * rowLength + gl_WorkGroupID.x;
+  if (entry >= listedTiles) return;  // the last row's rest
+  uint tile = filterTiles[entry];
   ivec2 pixel = ivec2(uvec2(tile & 0xffffu, tile >> 16) * gl_WorkGroupSize.xy +
                       gl_LocalInvocationID.xy);
   if (!insideImage(pixel)) return;
@@ -33,9 +35,9 @@ void main() {
   vec4 result = centre;
   // A pixel whose estimate has no variance (fully lit or fully shadowed, every sample alike)
   // keeps its value: with a luminance scale of 1e-4 every differing tap weighs nothing. Only
-  // the penumbrae are filtered, and lavapipe skips the taps of whole uniform work-groups. Its
-  // surface is not even read: most of a picture is such pixels, and on lavapipe every image
-  // read counts (on the H100 it makes no measurable difference).
+  // the penumbrae are filtered (work-groups without one are not dispatched at all). Its
+  // surface is not even read: within a listed work-group most pixels may be such, and on
+  // lavapipe every image read counts (on the H100 it makes no measurable difference).
   vec4 surface = vec4(0.0, 0.0, 0.0, -1.0);
   uint instance = 0u;
   vec4 moments = vec4(0.0);

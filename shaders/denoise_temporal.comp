@@ -162,8 +162,15 @@ void main() {
   // NaN counts as variance: the a-trous iterations store such a pixel.
   if (subgroupAny(filterVariance != 0.0) && subgroupElect()) {
     uvec2 tile = gl_WorkGroupID.xy;
-    if (imageAtomicExchange(filterTilesImage, ivec2(tile), pass.tileStamp) != pass.tileStamp)
-      filterTiles[atomicAdd(dispatchGroups[0], 1u)] = tile.x | tile.y << 16;
+    if (imageAtomicExchange(filterTilesImage, ivec2(tile), pass.tileStamp) != pass.tileStamp) {
+      uint entry = atomicAdd(listedTiles, 1u);
+      filterTiles[entry] = tile.x | tile.y << 16;
+      // Dispatched in rows as wide as the tile grid: a count of work-groups in one dimension
+      // may be limited to 65535.
+      uint rowLength = gl_NumWorkGroups.x;
+      atomicMax(dispatchGroups[0], min(entry + 1u, rowLength));
+      atomicMax(dispatchGroups[1], entry / rowLength + 1u);
+    }
   }
   float penumbra = penumbraSamples > 0.0 ? penumbraSum / penumbraSamples : -1.0;
   // The moments' length (half floats) serves the a-trous passes' test for a young history; the

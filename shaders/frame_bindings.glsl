@@ -22,7 +22,8 @@ layout(set = 0, binding = BINDING_FILTER_A, rgba16f) uniform image2D filterAImag
 layout(set = 0, binding = BINDING_FILTER_B, rgba16f) uniform image2D filterBImage;
 layout(set = 0, binding = BINDING_FILTER_TILES, r32ui) uniform uimage2D filterTilesImage;
 layout(set = 0, binding = BINDING_FILTER_TILE_LIST, std430) buffer FilterTileList {
-  uint dispatchGroups[3];
+  uint dispatchGroups[3];  // rows of up to the tile grid's width, as many rows as needed
+  uint listedTiles;
   uint filterTiles[];
 };
 

@@ -56,8 +56,9 @@ using uint = uint32_t;
 // r32ui, one texel per denoiser work-group: the stamp of the last frame whose temporal pass left
 // a pixel there with variance for the a-trous iterations to filter.
 #define BINDING_FILTER_TILES 34
-// A storage buffer: the a-trous iterations' indirect dispatch (x, y, z work-groups), then one
-// entry per work-group the temporal pass left something to filter (x | y << 16).
+// A storage buffer: the a-trous iterations' indirect dispatch (x, y, z work-groups), the count
+// of listed work-groups, then one entry per work-group the temporal pass left something to
+// filter (x | y << 16).
 #define BINDING_FILTER_TILE_LIST 35
 // The most frames the upscaler's history averages (in expected sample weight): a static view
 // has converged after about this many frames.
