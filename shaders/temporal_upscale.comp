@@ -86,12 +86,25 @@ void main() {
   }
   vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
 
-  // Where this pixel's point was in the previous frame, in output pixels: the nearest sample's
-  // motion (render pixels, without this frame's jitter) applied to this pixel.
+  // Where this pixel's point was in the previous frame, in output pixels: the motion (render
+  // pixels, without this frame's jitter) of the nearest of the four samples around it, applied
+  // to this pixel. Nearest in depth: along a silhouette the foreground's motion carries the
+  // pixels around its edge, so an edge moves as one piece instead of splitting into the
+  // samples' 4-pixel steps.
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
   vec4 motion = imageLoad(motionImage, nearest);
+  ivec2 motionSample = nearest;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+    if (at == nearest) continue;
+    vec4 candidate = imageLoad(motionImage, at);
+    if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
+      motion = candidate;
+      motionSample = at;
+    }
+  }
   uint seenInstance = uint(motion.w);
-  vec2 previous = vec2(pixel) + (motion.xy - (vec2(nearest) + jitter)) / scale;
+  vec2 previous = vec2(pixel) + (motion.xy - (vec2(motionSample) + jitter)) / scale;
   bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
