@@ -172,8 +172,7 @@ class UpscaleBench {
     for (uint32_t i = 1; i <= last; ++i) {
       const bool measured =
           std::find(checkpoints.begin(), checkpoints.end(), i) != checkpoints.end();
-      const render::FrameStats stats =
-          r->renderFrame(frame(i - 1, cameraAt(i - 1)), measured);
+      const render::FrameStats stats = r->renderFrame(frame(i - 1, cameraAt(i - 1)), measured);
       if (measured) results.push_back({pictureOf(*r), stats.gpu.tonemapMs});
     }
     return results;
@@ -306,8 +305,8 @@ int commandBenchUpscale(const Options& options) {
   // The same view as the moving run's last, held still: what walking there costs, apart from
   // what the view there holds.
   const auto stillAtWalkEnd = bench.upscaled({32}, atWalkEnd, outputWidth, outputHeight);
-  rows.push_back(measure(kStillAtWalkEnd, 32, stillAtWalkEnd[0].second, stillAtWalkEnd[0].first,
-                         walkEnd));
+  rows.push_back(
+      measure(kStillAtWalkEnd, 32, stillAtWalkEnd[0].second, stillAtWalkEnd[0].first, walkEnd));
   writePicture(outDirectory / ("upscale_" + stem + "_walk_end_still_32.png"),
                stillAtWalkEnd[0].first);
   writePicture(outDirectory / ("upscale_" + stem + "_walk_end_reference.png"), walkEnd);
