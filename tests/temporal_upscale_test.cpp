@@ -74,8 +74,9 @@ class TemporalUpscaleTest : public test::VulkanTest {
     return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
   }
 
-  // The box scene at the output size, averaged in linear light over 16 jittered frames.
-  static std::vector<float> reference(float boxX) {
+  // The box scene at the output size, averaged in linear light over 16 jittered frames, seen
+  // from the camera moved `cameraX` to the right.
+  static std::vector<float> reference(float boxX, float cameraX = 0.0f) {
     render::RendererOptions options;
     options.width = kOutputWidth;
     options.height = kOutputHeight;
@@ -84,6 +85,7 @@ class TemporalUpscaleTest : public test::VulkanTest {
     std::vector<double> sum(size_t(kOutputWidth) * kOutputHeight, 0.0);
     for (uint32_t i = 0; i < kSamples; ++i) {
       scene::FrameDesc frame = frameAt(i);
+      frame.camera.position.x = cameraX;
       frame.jitter = render::TemporalUpscaler::jitter(i * 5u + 1u);
       renderer.renderFrame(frame);
       const std::vector<float> values = green(renderer.pixels());
@@ -157,6 +159,31 @@ TEST_F(TemporalUpscaleTest, a_moving_box_leaves_no_trail_longer_than_2_output_pi
   std::printf("longest trail: %d output px over %d rows\n", longestTrail, rowsThroughBox);
   EXPECT_GT(rowsThroughBox, 5);
   EXPECT_LE(longestTrail, 2);
+}
+
+TEST_F(TemporalUpscaleTest, a_strafing_view_is_no_worse_than_the_same_view_held_still) {
+  // The camera strafes right 1.5 render pixels (at the box's depth) a frame for 16 frames, so
+  // the box's edges move over the wall behind it (parallax) at a fraction of a sample a frame.
+  const float pixelAtBox = 2.0f * -kBoxDepth * std::tan(glm::radians(30.0f)) / kRenderHeight;
+  const float step = 1.5f * pixelAtBox;
+  constexpr uint32_t kFrames = 16;
+  auto walking = upscaler(boxScene(0.0f));
+  auto still = upscaler(boxScene(0.0f));
+  for (uint32_t frame = 0; frame < kFrames; ++frame) {
+    scene::FrameDesc walked = frameAt(frame), held = frameAt(frame);
+    walked.camera.position.x = step * float(frame);
+    held.camera.position.x = step * float(kFrames - 1);
+    walking->renderFrame(walked);
+    still->renderFrame(held);
+  }
+  const std::vector<float> expected = reference(0.0f, step * float(kFrames - 1));
+  const double movingError = render::rootMeanSquareError(expected, green(walking->pixels()));
+  const double stillError = render::rootMeanSquareError(expected, green(still->pixels()));
+  std::printf("after %u frames: strafing RMSE %.5f, held still %.5f (%.2fx)\n", kFrames,
+              movingError, stillError, movingError / stillError);
+  // Issue 20 asks for 1.5x. Reprojecting with the nearest-in-depth sample's motion keeps it
+  // below the still view's (0.90x); with the nearest sample's it was 1.08x.
+  EXPECT_LE(movingError, stillError);
 }
 
 TEST_F(TemporalUpscaleTest, a_disoccluded_region_is_within_the_static_error_after_8_frames) {
