@@ -87,10 +87,10 @@ void main() {
   vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
 
   // Where this pixel's point was in the previous frame, in output pixels: the motion (render
-  // pixels, without this frame's jitter) of the nearest of the four samples around it, applied
-  // to this pixel. Nearest in depth: along a silhouette the foreground's motion carries the
-  // pixels around its edge, so an edge moves as one piece instead of splitting into the
-  // samples' 4-pixel steps.
+  // pixels, without this frame's jitter) of whichever of the four samples around it is nearest
+  // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
+  // the foreground's motion so carries the pixels around its edge, which moves as one piece
+  // instead of splitting into the samples' 4-pixel steps.
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
   vec4 motion = imageLoad(motionImage, nearest);
   ivec2 motionSample = nearest;
