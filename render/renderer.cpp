@@ -425,6 +425,8 @@ void Renderer::createDescriptors() {
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)
     textureInfos.push_back({sampler_, texture->view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  std::vector<std::pair<uint32_t, const Buffer*>> allBuffers(buffers.begin(), buffers.end());
+  allBuffers.insert(allBuffers.end(), passBuffers.begin(), passBuffers.end());
   for (uint32_t parity = 0; parity < kSets; ++parity) {
     std::vector<std::pair<uint32_t, VkImageView>> storageImages = {
         {BINDING_HDR_IMAGE, hdrImage_->view()}, {BINDING_OUTPUT_IMAGE, outputImage_->view()}};
@@ -438,8 +440,6 @@ void Renderer::createDescriptors() {
     std::vector<VkDescriptorImageInfo> imageInfos;
     for (const auto& [binding, view] : storageImages)
       imageInfos.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
-    std::vector<std::pair<uint32_t, const Buffer*>> allBuffers(buffers.begin(), buffers.end());
-    allBuffers.insert(allBuffers.end(), passBuffers.begin(), passBuffers.end());
     std::vector<VkDescriptorBufferInfo> bufferInfos;
     for (const auto& [binding, buffer] : allBuffers)
       bufferInfos.push_back({buffer->handle(), 0, VK_WHOLE_SIZE});

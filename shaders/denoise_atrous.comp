@@ -24,8 +24,7 @@ vec4 loadFiltered(ivec2 pixel) {
 void main() {
   // Dispatched for the work-groups the temporal pass listed: one where no pixel has variance
   // stays as that pass left it, in both filter images.
-  uint rowLength = (frame.sizeFrameLights.x + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
-  uint entry = gl_WorkGroupID.y * rowLength + gl_WorkGroupID.x;
+  uint entry = gl_WorkGroupID.y * tileRowLength() + gl_WorkGroupID.x;
   if (entry >= listedTiles) return;  // the last row's rest
   uint tile = filterTiles[entry];
   ivec2 pixel = ivec2(uvec2(tile & 0xffffu, tile >> 16) * gl_WorkGroupSize.xy +

@@ -15,6 +15,10 @@ layout(push_constant) uniform Pass {
   uint tileStamp;
 } pass;
 
+// The tile grid's width: one texel of filterTilesImage per work-group. The temporal pass lists
+// work-groups in rows of this length, and the a-trous iterations read them back so.
+uint tileRowLength() { return uint(imageSize(filterTilesImage).x); }
+
 // Below this variance the temporal pass writes its output to both filter images: it may read
 // back as 0 from a half float (whichever rounding, denormals flushed or not), and an a-trous
 // iteration neither changes nor stores a pixel of variance 0.

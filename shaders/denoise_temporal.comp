@@ -167,7 +167,7 @@ void main() {
       filterTiles[entry] = tile.x | tile.y << 16;
       // Dispatched in rows as wide as the tile grid: a count of work-groups in one dimension
       // may be limited to 65535.
-      uint rowLength = gl_NumWorkGroups.x;
+      uint rowLength = tileRowLength();
       atomicMax(dispatchGroups[0], min(entry + 1u, rowLength));
       atomicMax(dispatchGroups[1], entry / rowLength + 1u);
     }
