@@ -24,6 +24,7 @@ const float RELATIVE_DEPTH_TOLERANCE = 0.05;
 const float NORMAL_COSINE_TOLERANCE = 0.9;
 
 const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
+const float MOTION_GRID = 256.0;    // the reprojection rounds to 1/256 pixel
 
 #ifndef NEIGHBOURHOOD_TILE  // the renderer defines it: 1 on GPUs, 0 on CPU drivers
 #define NEIGHBOURHOOD_TILE 0
@@ -102,7 +103,10 @@ void main() {
   float historyCap = MAX_HISTORY_LENGTH;
   vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
   if (!reset && surface.w >= 0.0 && motion.z >= 0.0) {
-    vec2 previous = reference ? vec2(pixel) : vec2(pixel) + motion.xy;
+    // On a grid of 1/256 pixel: a still view's motion, rounding left over from projecting the
+    // pixel's point back, becomes exactly 0, and the three taps of weight 0 are not read.
+    vec2 previous =
+        reference ? vec2(pixel) : vec2(pixel) + round(motion.xy * MOTION_GRID) / MOTION_GRID;
     float expectedDistance = reference ? surface.w : motion.z;
     ivec2 base = ivec2(floor(previous));
     vec2 f = previous - vec2(base);

@@ -43,6 +43,7 @@ const float kSampleRadius = 1.0;
 // Accumulated weight worth one sample at the pixel centre: below it the picture blends towards
 // the bilinear upscale of this frame, so the first frames look like a plain upscale.
 const float kEnoughWeight = 1.0;
+const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pixel
 
 float sampleWeight(vec2 offset) {
   float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
@@ -104,7 +105,12 @@ void main() {
     }
   }
   uint seenInstance = uint(motion.w);
-  vec2 previous = vec2(pixel) + (motion.xy - (vec2(motionSample) + jitter)) / scale;
+  // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
+  // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are
+  // not read.
+  vec2 previous =
+      vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale * kMotionGrid) /
+                        kMotionGrid;
   bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
