@@ -752,7 +752,7 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.previousCameraUp = previous.cameraUp;
   uniforms.previousCameraForward = previous.cameraForward;
   uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
-                                denoiserIterations(frame), 0u);
+                                denoiserIterations(frame), instancesMoved_ ? 1u : 0u);
   if (probeOnly) {  // un-jittered, launched over the focus regions' box
     uniforms.probeLaunch =
         focusBox_ ? glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u) : glm::uvec4(0u, 0u, 1u, 0u);

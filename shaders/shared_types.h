@@ -114,7 +114,9 @@ struct FrameUniforms {
   vec4 previousCameraRight;
   vec4 previousCameraUp;
   vec4 previousCameraForward;
-  uvec4 denoise;  // x: reset history, y: reference accumulation, z: filter iterations
+  // x: reset history, y: reference accumulation, z: filter iterations, w: 1 if an instance may
+  // have moved since the last full frame (else every previousFromCurrent is the identity)
+  uvec4 denoise;
   // A probe-only frame (z: 1) traces just the focus regions' box, whose top-left pixel is xy,
   // and finds what each path reaches without shading it or writing any image.
   uvec4 probeLaunch;
