@@ -118,10 +118,10 @@ void main() {
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
                      frame.previousCameraForward.xyz == frame.cameraForward.xyz;
   if (cameraStill && !instanceMoved(seenInstance)) {
-    // The four samples around the pixel are in the range already: the other five of the 3x3
-    // lie in the column and row beyond them on the side away from the pixel's nearest sample.
-    // (Loaded one by one: a loop over the 3x3 with a test for the four cost lavapipe more than
-    // the loads themselves.)
+    // The four samples around the pixel are in the range already. The 3x3 is centred on the
+    // nearest of them, so its other five lie in the column and the row just past the four on
+    // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
+    // cost lavapipe more than the loads themselves.)
     ivec2 beyond = ivec2(base) + mix(ivec2(-1), ivec2(2), greaterThan(nearest, ivec2(base)));
     ivec2 first = ivec2(base), second = ivec2(base) + 1;
     ivec2 extra[5] = ivec2[5](ivec2(beyond.x, first.y), ivec2(beyond.x, second.y),
