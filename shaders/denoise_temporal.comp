@@ -20,8 +20,6 @@ const float MIN_MOVING_HISTORY = 4.0;  // the fewest frames a moving view averag
 // where every sample agrees (a shadow has just left or arrived) the clamp still acts at once.
 const int NEIGHBOURHOOD_RADIUS = 2;
 const float CLAMP_MARGIN = 0.1;
-const float RELATIVE_DEPTH_TOLERANCE = 0.05;
-const float NORMAL_COSINE_TOLERANCE = 0.9;
 
 const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
 const float MOTION_GRID = 256.0;    // the reprojection rounds to 1/256 pixel
@@ -120,10 +118,9 @@ void main() {
         float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         if (weight <= 0.0) continue;
         if (imageLoad(instancePreviousImage, tap).x != instance) continue;
-        vec4 previousSurface = unpackSurface(imageLoad(surfacePreviousImage, tap).xy);
-        if (abs(previousSurface.w - expectedDistance) > RELATIVE_DEPTH_TOLERANCE * expectedDistance)
+        if (!historyMatches(imageLoad(surfacePreviousImage, tap).xy, expectedDistance,
+                            surface.xyz))
           continue;
-        if (dot(previousSurface.xyz, surface.xyz) < NORMAL_COSINE_TOLERANCE) continue;
         vec4 tapHistory = imageLoad(historyImage, tap);  // the estimate and its length
         vec2 tapMoments = imageLoad(momentsImage, tap).xy;
         if (!isFinite(tapHistory.rgb) || !isFinite(vec3(tapMoments, tapHistory.a)))
@@ -145,15 +142,24 @@ void main() {
       historyLength = momentsSum.z / weightSum;
     }
   }
-  historyLength = min(historyLength + 1.0, reference ? 1.0e9 : historyCap);
-  if (!reference && historyLength > 1.0) {
+  // Where ray-gen expected no history (a reset, or the motion it wrote says "nowhere") it
+  // traced DENOISER_FRESH_HISTORY_FRAMES frames' worth of samples, which count as that many.
+  bool fresh = !reference && surface.w >= 0.0 && (reset || motion.z < 0.0);
+  float currentFrames = fresh ? float(DENOISER_FRESH_HISTORY_FRAMES) : 1.0;
+  historyLength = min(historyLength + currentFrames, reference ? 1.0e9 : historyCap);
+  if (!reference && historyLength > currentFrames) {
     history = clamp(history, low - CLAMP_MARGIN, high + CLAMP_MARGIN);
   }
   // history + a (current - history): exact when they agree, so fully lit stays exactly 1.
-  float alpha = 1.0 / historyLength;
+  float alpha = min(currentFrames / historyLength, 1.0);
   vec3 integrated = clamp(history + alpha * (current - history), 0.0, 1.0);
   float currentLuminance = luminance(current);
-  moments += alpha * (vec2(currentLuminance, currentLuminance * currentLuminance) - moments);
+  // The moments are those of one frame's estimate. Fresh samples are the mean of several
+  // frames' worth, whose spread is that many times smaller: the neighbourhood's spread (the
+  // mean's) scaled up stands in for one frame's.
+  float currentSquare = currentLuminance * currentLuminance;
+  if (fresh) currentSquare += currentFrames * luminance(sigma) * luminance(sigma);
+  moments += alpha * (vec2(currentLuminance, currentSquare) - moments);
   float variance = max(moments.y - moments.x * moments.x, 0.0);
   if (historyLength < 4.0) variance = max(variance, luminance(sigma) * luminance(sigma));
   // The spatial filter steers by the variance of the integrated estimate, which falls as the

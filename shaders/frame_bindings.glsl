@@ -65,4 +65,16 @@ uvec2 packMotion(vec2 offset, float previousDistance) {
 vec3 unpackMotion(uvec2 packed) {
   return vec3(unpackHalf2x16(packed.x), uintBitsToFloat(packed.y));
 }
+
+// The temporal pass keeps a pixel of history only where the surface there last frame matches
+// the point's: the same instance, a distance within 5 % of the expected one, a similar normal.
+const float RELATIVE_DEPTH_TOLERANCE = 0.05;
+const float NORMAL_COSINE_TOLERANCE = 0.9;
+
+bool historyMatches(uvec2 previousSurfacePacked, float expectedDistance, vec3 normal) {
+  vec4 previousSurface = unpackSurface(previousSurfacePacked);
+  return abs(previousSurface.w - expectedDistance) <= RELATIVE_DEPTH_TOLERANCE * expectedDistance &&
+         dot(previousSurface.xyz, normal) >= NORMAL_COSINE_TOLERANCE;
+}
+
 #endif

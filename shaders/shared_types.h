@@ -41,6 +41,10 @@ using uint = uint32_t;
 // The most frames the temporal filter averages: the oldest weight stays >= 1/32, a bounded lag;
 // a static view has settled after this many frames.
 #define DENOISER_MAX_HISTORY 32
+// A pixel whose history starts afresh (the first frame, a disocclusion, the view's edge while
+// turning) traces this many frames' worth of soft shadow samples, and the temporal filter
+// counts them as that many frames.
+#define DENOISER_FRESH_HISTORY_FRAMES 8
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 #define BINDING_LIGHT_ROUTES 26  // lights seen via mirrors (levels with flat mirrors and lights)
