@@ -371,7 +371,7 @@ TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_32_static_frames) {
 // A view strafing a third of a pixel a frame: the history is resampled between pixels every
 // frame, which softens a sharp shadow edge a little more each time. The history is kept shorter
 // while the view moves, so that blur stays about a pixel and the error still falls from 16 to
-// 32 frames (with 32 frames kept while moving it grew: 0.0324 after 8, 0.0626 after 32). The
+// 32 frames (with 32 frames kept while moving it grows: 0.0376 after 16, 0.0498 after 32). The
 // comparison starts at 16: the first frame's kFresh frames' worth of samples still show after
 // 8 (0.0207 after 8, 0.0245 after 16, 0.0229 after 32, 0.0173 after 64).
 TEST_F(SoftShadowTest, a_strafing_view_keeps_converging_from_16_to_32_frames) {
