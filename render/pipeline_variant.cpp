@@ -43,7 +43,7 @@ PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
 
 PipelineDescription describePipeline(const PipelineFeatures& features) {
   PipelineDescription description;
-  description.misses = {"surface.rmiss", "shadow.rmiss"};
+  description.misses = {"surface.rmiss"};  // shadow rays share it (shaders/shadow_rays.glsl)
   description.hitGroups = {features.alphaMask ? "surface.rchit+alpha.rahit" : "surface.rchit"};
   if (features.glass) {
     description.misses.push_back("glass.rmiss");
@@ -52,7 +52,6 @@ PipelineDescription describePipeline(const PipelineFeatures& features) {
   description.defines = {
       {"HAS_GLASS", features.glass ? "1" : "0"},
       {"HAS_MIRRORS", features.mirrors ? "1" : "0"},
-      {"MAX_MIRROR_BOUNCES", std::to_string(features.mirrors ? features.maxMirrorBounces : 0)},
       {"SOFT_SHADOWS", features.softShadows ? "1" : "0"},
       {"LIGHT_ROUTES", features.lightRoutes ? "1" : "0"},
   };

@@ -293,7 +293,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   if (features.softShadows)
     denoiser_ = std::make_unique<Denoiser>(context, options.width, options.height);
   routeLight_ = features.lightRoutes;
-  routeMirrors_ = features.maxMirrorBounces;
+  mirrorBounces_ = features.maxMirrorBounces;
   mirrorFaces_.resize(scene.instances.size());
   mirrorTints_.resize(scene.instances.size(), glm::vec3(0.0f));
   for (size_t i = 0; routeLight_ && i < scene.instances.size(); ++i) {
@@ -662,7 +662,7 @@ void Renderer::writeLightRoutes() {
                        linear * face.halfU, linear * face.halfV, mirrorTints_[i]});
     }
   }
-  std::vector<gpu::GpuLightRoute> routes = findLightRoutes(faces, gpuLights_, routeMirrors_);
+  std::vector<gpu::GpuLightRoute> routes = findLightRoutes(faces, gpuLights_, mirrorBounces_);
   const bool same = routes.size() == routes_.size() &&
                     std::equal(routes.begin(), routes.end(), routes_.begin(),
                                [](const gpu::GpuLightRoute& a, const gpu::GpuLightRoute& b) {
@@ -734,6 +734,7 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
       glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
+  uniforms.mirrorBounces = glm::uvec4(mirrorBounces_, 0u, 0u, 0u);
   // Reprojection needs the previous frame's camera; without one the history starts afresh.
   // A jump of the camera (a cut or teleport) is treated like an explicit reset: reprojecting
   // across it would only smear the old view.

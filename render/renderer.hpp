@@ -175,9 +175,9 @@ class Renderer {
   Buffer paths_;
   Buffer probeSetup_;
   Buffer lightRoutes_;
-  Buffer triangleMaterials_;  // scene material per triangle of instances of several materials
-  bool routeLight_ = false;   // the variant routes light by mirrors
-  uint32_t routeMirrors_ = 0;
+  Buffer triangleMaterials_;    // scene material per triangle of instances of several materials
+  bool routeLight_ = false;     // the variant routes light by mirrors
+  uint32_t mirrorBounces_ = 0;  // the most a camera path or a light route takes (the cap)
   std::vector<std::vector<scene::FlatFace>> mirrorFaces_;  // per instance, object space
   std::vector<glm::vec3> mirrorTints_;                     // per instance
   std::vector<bool> instanceVisible_;

@@ -127,6 +127,9 @@ struct FrameUniforms {
   // xy: the camera rays' offset from the pixel centres (pixels, in [-0.5, 0.5): the upscaler's
   // sequence, else the frame's own; 0 in probe frames); zw: the output size.
   vec4 upscale;
+  // x: the most mirror bounces a camera path takes, the level's cap (a uniform, not a variant
+  // define: levels that differ only in it share one pipeline and its compile)
+  uvec4 mirrorBounces;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials
