@@ -43,7 +43,7 @@ PipelineFeatures allFeatures(uint32_t maxMirrorBounces) {
 
 PipelineDescription describePipeline(const PipelineFeatures& features) {
   PipelineDescription description;
-  description.misses = {"surface.rmiss"};  // shadow rays share it (shaders/shadow_rays.glsl)
+  description.misses = {"surface.rmiss", "shadow.rmiss"};
   description.hitGroups = {features.alphaMask ? "surface.rchit+alpha.rahit" : "surface.rchit"};
   if (features.glass) {
     description.misses.push_back("glass.rmiss");

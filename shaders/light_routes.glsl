@@ -63,31 +63,37 @@ bool routeCanReach(uint route, vec3 origin, vec3 direction, float distance) {
   return true;
 }
 
-// The shadow ray's path from `origin` towards a point `distance` away on the route's image
-// (unfolded): a segment up to each face, reflected there, and one on to the light. False where
-// the ray misses a face, which the geometry tells without tracing anything: no light arrives.
-// The mirrors' tints are the caller's (the route's tint).
-bool routePath(uint route, vec3 origin, vec3 direction, float distance, out ShadowPath path) {
-  path.segments = 0u;
+// What arrives along the route from `origin` towards a point `distance` away on the image
+// (unfolded): 0 when the ray misses a face or something opaque is in the way, else the glass
+// transmittance of every stretch. The mirrors' tints are the caller's (the route's tint).
+vec3 routeTransmittance(uint route, vec3 origin, vec3 direction, float distance) {
+  vec3 starts[MAX_ROUTE_MIRRORS + 1];
+  vec3 directions[MAX_ROUTE_MIRRORS + 1];
+  float lengths[MAX_ROUTE_MIRRORS + 1];
   uint count = routes[route].lightMirrors.y;
+  // Geometry first, which rejects most points without tracing anything.
   for (uint i = 0u; i < count; ++i) {
     float t;
-    if (!crossesFace(route, i, origin, direction, distance, 0.0, t)) return false;
+    if (!crossesFace(route, i, origin, direction, distance, 0.0, t)) return vec3(0.0);
     vec3 normal = routes[route].mirrors[i].plane.xyz;
-    path.starts[i] = origin;
-    path.directions[i] = direction;
-    path.lengths[i] = t * 0.9999;  // stop short of the mirror itself
+    starts[i] = origin;
+    directions[i] = direction;
+    lengths[i] = t * 0.9999;  // stop short of the mirror itself
     vec3 onFace = origin + direction * t;
     float step = max(max(abs(onFace.x), abs(onFace.y)), max(abs(onFace.z), t)) / 65536.0;
     origin = onFace + normal * max(step, 1e-30);
     direction = reflect(direction, normal);
     distance -= t;
   }
-  path.starts[count] = origin;
-  path.directions[count] = direction;
-  path.lengths[count] = distance;
-  path.segments = count + 1u;
-  return true;
+  starts[count] = origin;
+  directions[count] = direction;
+  lengths[count] = distance;
+  vec3 transmittance = vec3(1.0);
+  for (uint i = 0u; i <= count; ++i) {
+    transmittance *= shadowTransmittance(starts[i], directions[i], lengths[i]);
+    if (all(equal(transmittance, vec3(0.0)))) break;
+  }
+  return transmittance;
 }
 
 // A point on the route's image light seen from `position` (sampleLight with the image's own

@@ -1,9 +1,11 @@
 // Payloads between the ray-gen loop and the hit/miss stages.
 #define PAYLOAD_SURFACE 0
-#define PAYLOAD_SHADOW 1  // a SurfaceHit too: the surface miss and hit shaders serve shadow rays
+#define PAYLOAD_SHADOW 1
 #define PAYLOAD_GLASS 2
+#define PAYLOAD_BLOCKER 3  // a soft shadow ray's, with the hit shader run for the caster it met
 #define MISS_SURFACE 0
-#define MISS_GLASS 1
+#define MISS_SHADOW 1
+#define MISS_GLASS 2
 
 // Glass optical depth: -log2(transmittance) in units of 1/OPTICAL_DEPTH_SCALE.
 #define OPTICAL_DEPTH_SCALE 65536.0

@@ -110,7 +110,7 @@ TEST_F(GlassMirrorTest, glass_behind_an_opaque_wall_is_invisible) {
   builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
                    builder.material(glassMaterial({0.1f, 0.1f, 0.1f})), at({0, 0, -3}));
   const Frame with = render(builder.scene, 16, 16);
-  EXPECT_EQ(with.pipeline.misses.size(), 2u);  // the glass variant really ran
+  EXPECT_EQ(with.pipeline.misses.size(), 3u);  // the glass variant really ran
   EXPECT_EQ(without.image.pixels, with.image.pixels);
 }
 
@@ -257,7 +257,7 @@ TEST_F(GlassMirrorTest, path_reaches_orb_through_glass_and_via_mirrors_but_not_b
 
 TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelines) {
   const render::PipelineDescription plain = render::describePipeline({false, false, 0});
-  EXPECT_EQ(plain.misses, (std::vector<std::string>{"surface.rmiss"}));
+  EXPECT_EQ(plain.misses, (std::vector<std::string>{"surface.rmiss", "shadow.rmiss"}));
   EXPECT_EQ(plain.hitGroups, (std::vector<std::string>{"surface.rchit"}));
   EXPECT_EQ(plain.recursionDepth, 1u);
   EXPECT_EQ(
@@ -266,7 +266,8 @@ TEST(PipelineVariant, plain_glass_and_mirror_levels_build_the_documented_pipelin
           {"HAS_GLASS", "0"}, {"HAS_MIRRORS", "0"}, {"SOFT_SHADOWS", "0"}, {"LIGHT_ROUTES", "0"}}));
 
   const render::PipelineDescription withGlass = render::describePipeline({true, false, 0});
-  EXPECT_EQ(withGlass.misses, (std::vector<std::string>{"surface.rmiss", "glass.rmiss"}));
+  EXPECT_EQ(withGlass.misses,
+            (std::vector<std::string>{"surface.rmiss", "shadow.rmiss", "glass.rmiss"}));
   EXPECT_EQ(withGlass.hitGroups, (std::vector<std::string>{"surface.rchit", "glass.rahit"}));
   EXPECT_EQ(withGlass.recursionDepth, 1u);
 

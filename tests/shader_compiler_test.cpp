@@ -91,7 +91,8 @@ TEST_F(ShaderCompilerTest, include_outside_the_shader_directory_is_refused) {
 
 TEST_F(ShaderCompilerTest, shipped_shaders_all_compile) {
   render::ShaderCompiler shipped(test::sourceDir() / "shaders", root_ / "cache");
-  for (const char* file : {"raygen.rgen", "surface.rmiss", "surface.rchit", "tonemap.comp"}) {
+  for (const char* file :
+       {"raygen.rgen", "surface.rmiss", "shadow.rmiss", "surface.rchit", "tonemap.comp"}) {
     EXPECT_FALSE(shipped.compile(file).spirv.empty()) << file;
   }
 }
