@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <string>
 
 namespace app {
 namespace fs = std::filesystem;
@@ -27,6 +28,12 @@ render::RendererOptions rendererOptionsFor(const Options& options, uint32_t widt
   rendererOptions.subgroupCounters = options.subgroupCounters;
   rendererOptions.lightRoutes = options.lightRoutes;
   if (options.upscaleSize) {
+    if (options.upscaleSize->first < width || options.upscaleSize->second < height) {
+      throw UsageError("--upscale: expected an output size at least the render size (" +
+                       std::to_string(width) + "x" + std::to_string(height) + "), got " +
+                       std::to_string(options.upscaleSize->first) + "x" +
+                       std::to_string(options.upscaleSize->second));
+    }
     rendererOptions.outputWidth = options.upscaleSize->first;
     rendererOptions.outputHeight = options.upscaleSize->second;
   }

@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "render/barriers.hpp"
+#include "render/bvh_order.hpp"
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
@@ -258,7 +259,9 @@ void TopLevel::setVisible(uint32_t instance, bool visible) {
 void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
   instances_.clear();
   masks_.clear();
+  std::vector<LeafBounds> bounds;
   for (const TlasInstance& instance : instances) {
+    bounds.push_back(instance.bounds);
     masks_.push_back(uint8_t(instance.mask & 0xFF));
     VkAccelerationStructureInstanceKHR record{};
     record.transform = toRowMajor3x4(instance.objectToWorld);
@@ -269,8 +272,15 @@ void TopLevel::writeInstances(std::span<const TlasInstance> instances) {
     record.accelerationStructureReference = instance.blas->address();
     instances_.push_back(record);
   }
-  if (!instances_.empty())
-    instanceBuffer_.write(instances_.data(), instances_.size() * sizeof(instances_[0]));
+  order_ = halvingOrder(bounds);
+  upload();
+}
+
+void TopLevel::upload() {
+  ordered_.clear();
+  for (const uint32_t instance : order_) ordered_.push_back(instances_[instance]);
+  if (!ordered_.empty())
+    instanceBuffer_.write(ordered_.data(), ordered_.size() * sizeof(ordered_[0]));
 }
 
 void TopLevel::recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4> objectToWorld) {
@@ -278,8 +288,7 @@ void TopLevel::recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4>
     throw RenderError("TopLevel::recordUpdate: instance count changed");
   for (size_t i = 0; i < instances_.size(); ++i)
     instances_[i].transform = toRowMajor3x4(objectToWorld[i]);
-  if (!instances_.empty())
-    instanceBuffer_.write(instances_.data(), instances_.size() * sizeof(instances_[0]));
+  upload();
   record(commands, true);
 }
 

@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "render/buffer.hpp"
+#include "render/bvh_order.hpp"
 
 namespace render {
 
@@ -61,6 +62,7 @@ struct TlasInstance {
   uint32_t mask = 0xFF;                  // which rays see it (cull mask bits)
   uint32_t hitGroup = 0;                 // SBT record offset: which hit group its hits run
   VkGeometryInstanceFlagsKHR flags = 0;  // e.g. FORCE_OPAQUE / FORCE_NO_OPAQUE
+  LeafBounds bounds;                     // world-space, for the instances' order
 };
 
 class TopLevel {
@@ -83,7 +85,13 @@ class TopLevel {
 
   const Context* context_;
   uint32_t instanceCount_ = 0;
+  void upload();
+
   std::vector<VkAccelerationStructureInstanceKHR> instances_;
+  // The structure's instance list in an order whose halvings split space (bvh_order.hpp): its
+  // entry k is instances_[order_[k]].
+  std::vector<uint32_t> order_;
+  std::vector<VkAccelerationStructureInstanceKHR> ordered_;
   std::vector<uint8_t> masks_;  // each instance's own mask, for when it is shown again
   Buffer instanceBuffer_;
   Buffer scratch_;

@@ -7,11 +7,13 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
+#include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/packing.hpp>
 
 #include "render/barriers.hpp"
+#include "render/bvh_order.hpp"
 #include "render/context.hpp"
 #include "render/gpu_types.hpp"
 #include "render/ray_tracing_pipeline.hpp"
@@ -112,6 +114,21 @@ gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
           glm::vec4(light.size, light.angularDiameterRadians, 0.0f)};
 }
 
+// The world-space box around a mesh's local bounds placed by `objectToWorld`.
+LeafBounds worldBounds(const LeafBounds& local, const glm::mat4& objectToWorld) {
+  LeafBounds world{glm::vec3(std::numeric_limits<float>::max()),
+                   glm::vec3(-std::numeric_limits<float>::max())};
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 point((corner & 1) ? local.high.x : local.low.x,
+                          (corner & 2) ? local.high.y : local.low.y,
+                          (corner & 4) ? local.high.z : local.low.z);
+    const glm::vec3 placed = glm::vec3(objectToWorld * glm::vec4(point, 1.0f));
+    world.low = glm::min(world.low, placed);
+    world.high = glm::max(world.high, placed);
+  }
+  return world;
+}
+
 }  // namespace
 
 Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene::SceneDesc& scene,
@@ -139,6 +156,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     uint32_t firstIndex, vertexOffset, indexCount, vertexCount;
   };
   std::vector<MeshRange> ranges;
+  // Each mesh's triangles in an order whose halvings split space (render/bvh_order.hpp): the
+  // triangle at position i of the index buffer is the mesh's triangle triangleOrders[mesh][i].
+  std::vector<std::vector<uint32_t>> triangleOrders;
+  std::vector<LeafBounds> meshBounds;
   for (const scene::MeshData& mesh : scene.meshes) {
     if (mesh.indices.empty() || mesh.indices.size() % 3 != 0 || mesh.vertices.empty())
       throw RenderError("mesh '" + mesh.name + "' has no triangles");
@@ -150,7 +171,27 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
         {static_cast<uint32_t>(allIndices.size()), static_cast<uint32_t>(allVertices.size()),
          static_cast<uint32_t>(mesh.indices.size()), static_cast<uint32_t>(mesh.vertices.size())});
     allVertices.insert(allVertices.end(), mesh.vertices.begin(), mesh.vertices.end());
-    allIndices.insert(allIndices.end(), mesh.indices.begin(), mesh.indices.end());
+    std::vector<LeafBounds> triangles;
+    LeafBounds meshBox{mesh.vertices[0].position, mesh.vertices[0].position};
+    for (size_t t = 0; t < mesh.indices.size(); t += 3) {
+      LeafBounds triangle{mesh.vertices[mesh.indices[t]].position,
+                          mesh.vertices[mesh.indices[t]].position};
+      for (size_t corner = 1; corner < 3; ++corner) {
+        const glm::vec3 position = mesh.vertices[mesh.indices[t + corner]].position;
+        triangle.low = glm::min(triangle.low, position);
+        triangle.high = glm::max(triangle.high, position);
+      }
+      meshBox.low = glm::min(meshBox.low, triangle.low);
+      meshBox.high = glm::max(meshBox.high, triangle.high);
+      triangles.push_back(triangle);
+    }
+    meshBounds.push_back(meshBox);
+    std::vector<uint32_t> order = halvingOrder(triangles);
+    for (const uint32_t triangle : order) {
+      for (size_t corner = 0; corner < 3; ++corner)
+        allIndices.push_back(mesh.indices[size_t(triangle) * 3 + corner]);
+    }
+    triangleOrders.push_back(std::move(order));
   }
   triangleCount_ = 0;
   std::vector<gpu::GpuInstance> gpuInstances;
@@ -166,7 +207,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
         throw RenderError("mesh '" + scene.meshes[instance.mesh].name +
                           "' has a material for other than every triangle");
       material = MATERIAL_PER_TRIANGLE | static_cast<uint32_t>(triangleMaterials.size());
-      for (const uint32_t own : perTriangle) {
+      for (const uint32_t triangle : triangleOrders[instance.mesh]) {
+        const uint32_t own = perTriangle[triangle];
         if (own >= instance.meshMaterials.size() ||
             instance.meshMaterials[own] >= scene.materials.size())
           throw RenderError("an instance refers to a mesh material that does not exist");
@@ -260,6 +302,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     const scene::InstanceDesc& instance = scene.instances[i];
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
+    tlasInstance.bounds = worldBounds(meshBounds[instance.mesh], instance.objectToWorld);
     tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody);
     if (alphaMasked(scene, instance)) {
       // Not opaque, so the alpha test (alpha.rahit) runs for every ray that meets it.

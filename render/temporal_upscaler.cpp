@@ -1,5 +1,6 @@
 #include "render/temporal_upscaler.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "render/context.hpp"
@@ -30,6 +31,14 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                    uint32_t renderHeight, uint32_t outputWidth,
                                    uint32_t outputHeight)
     : context_(context), outputWidth_(outputWidth), outputHeight_(outputHeight) {
+  // The resolve weighs each sample by a bump one output pixel wide: with fewer output pixels
+  // than samples, some pixels would get no sample's weight at all.
+  if (outputWidth < renderWidth || outputHeight < renderHeight) {
+    throw std::invalid_argument("temporal upscaling: the output size " +
+                                std::to_string(outputWidth) + "x" + std::to_string(outputHeight) +
+                                " is smaller than the render size " + std::to_string(renderWidth) +
+                                "x" + std::to_string(renderHeight));
+  }
   constexpr VkImageUsageFlags kCopyUsage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   motion_ = std::make_unique<StorageImage>(context, renderWidth, renderHeight,
                                            VK_FORMAT_R32G32B32A32_SFLOAT, 0, "upscale motion");

@@ -1,0 +1,65 @@
+#include "render/bvh_order.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+namespace render {
+namespace {
+
+float surfaceArea(const LeafBounds& box) {
+  const glm::vec3 extent = glm::max(box.high - box.low, glm::vec3(0.0f));
+  return extent.x * extent.y + extent.y * extent.z + extent.z * extent.x;
+}
+
+LeafBounds boundsOf(std::span<const LeafBounds> leaves, std::span<const uint32_t> indices) {
+  LeafBounds box{glm::vec3(std::numeric_limits<float>::max()),
+                 glm::vec3(-std::numeric_limits<float>::max())};
+  for (const uint32_t index : indices) {
+    box.low = glm::min(box.low, leaves[index].low);
+    box.high = glm::max(box.high, leaves[index].high);
+  }
+  return box;
+}
+
+// Sorts `indices` by the leaves' centres along `axis`, ties by index (an order that does not
+// depend on the standard library's sort).
+void sortAlong(std::span<const LeafBounds> leaves, std::span<uint32_t> indices, int axis) {
+  std::sort(indices.begin(), indices.end(), [&](uint32_t a, uint32_t b) {
+    const float ca = leaves[a].low[axis] + leaves[a].high[axis];
+    const float cb = leaves[b].low[axis] + leaves[b].high[axis];
+    return ca < cb || (ca == cb && a < b);
+  });
+}
+
+void orderRange(std::span<const LeafBounds> leaves, std::span<uint32_t> indices) {
+  const size_t count = indices.size();
+  if (count <= 2) return;
+  const size_t leftCount = (count + 1) / 2;  // the builder's first child takes ceil(n/2)
+  int bestAxis = 0;
+  float bestCost = std::numeric_limits<float>::max();
+  for (int axis = 0; axis < 3; ++axis) {
+    sortAlong(leaves, indices, axis);
+    const float cost =
+        surfaceArea(boundsOf(leaves, indices.first(leftCount))) * float(leftCount) +
+        surfaceArea(boundsOf(leaves, indices.subspan(leftCount))) * float(count - leftCount);
+    if (cost < bestCost) {
+      bestCost = cost;
+      bestAxis = axis;
+    }
+  }
+  sortAlong(leaves, indices, bestAxis);
+  orderRange(leaves, indices.first(leftCount));
+  orderRange(leaves, indices.subspan(leftCount));
+}
+
+}  // namespace
+
+std::vector<uint32_t> halvingOrder(std::span<const LeafBounds> leaves) {
+  std::vector<uint32_t> order(leaves.size());
+  std::iota(order.begin(), order.end(), 0u);
+  orderRange(leaves, order);
+  return order;
+}
+
+}  // namespace render
