@@ -317,8 +317,14 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
     }
     tlasInstances.push_back(tlasInstance);
+    if (glass) glassMembers_.push_back(i);
   }
   topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
+  if (!glassMembers_.empty()) {
+    std::vector<TlasInstance> glassInstances;
+    for (const uint32_t member : glassMembers_) glassInstances.push_back(tlasInstances[member]);
+    glassLevel_ = std::make_unique<TopLevel>(context, glassInstances);
+  }
 
   hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                              VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -386,8 +392,9 @@ void Renderer::destroyHandles() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 14> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 15> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
+      {BINDING_GLASS_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
@@ -452,6 +459,9 @@ void Renderer::createDescriptors() {
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   tlasWrite.accelerationStructureCount = 1;
   tlasWrite.pAccelerationStructures = &tlas;
+  VkAccelerationStructureKHR glassTlas = glassLevel_ ? glassLevel_->structure().handle() : tlas;
+  VkWriteDescriptorSetAccelerationStructureKHR glassTlasWrite = tlasWrite;
+  glassTlasWrite.pAccelerationStructures = &glassTlas;
   const std::array<std::pair<uint32_t, const Buffer*>, 11> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
@@ -498,6 +508,8 @@ void Renderer::createDescriptors() {
     };
     writes[write(BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1)].pNext =
         &tlasWrite;
+    writes[write(BINDING_GLASS_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1)].pNext =
+        &glassTlasWrite;
     for (size_t i = 0; i < storageImages.size(); ++i) {
       writes[write(storageImages[i].first, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 1)].pImageInfo =
           &imageInfos[i];
@@ -723,6 +735,9 @@ void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
   if (instance >= topLevel_->instanceCount())
     throw RenderError("setInstanceVisible: no such instance");
   topLevel_->setVisible(instance, visible);
+  const auto glassMember = std::find(glassMembers_.begin(), glassMembers_.end(), instance);
+  if (glassMember != glassMembers_.end())
+    glassLevel_->setVisible(uint32_t(glassMember - glassMembers_.begin()), visible);
   instanceVisible_[instance] = visible;
   tlasStale_ = true;
 }
@@ -832,6 +847,12 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     for (const glm::mat4& transform : currentTransforms_)
       renderTransforms.push_back(toRenderSpace(transform, *renderOrigin_));
     topLevel_->recordUpdate(commands, renderTransforms);
+    if (glassLevel_) {
+      std::vector<glm::mat4> glassTransforms;
+      for (const uint32_t member : glassMembers_)
+        glassTransforms.push_back(renderTransforms[member]);
+      glassLevel_->recordUpdate(commands, glassTransforms);
+    }
     tlasStale_ = false;
     memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                   VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,

@@ -189,6 +189,10 @@ class Renderer {
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;
   std::unique_ptr<TopLevel> topLevel_;
+  // The glass instances alone, which the glass rays traverse (none: they use topLevel_); its
+  // entry k is instance glassMembers_[k].
+  std::unique_ptr<TopLevel> glassLevel_;
+  std::vector<uint32_t> glassMembers_;
   std::vector<glm::mat4> pendingTransforms_;  // world space, for the next frame
   bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_
   std::vector<gpu::GpuLight> gpuLights_;   // render space (positions relative to the origin)

@@ -1,5 +1,6 @@
 // The scene as the ray tracing stages see it.
 layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT sceneTlas;
+layout(set = 0, binding = BINDING_GLASS_TLAS) uniform accelerationStructureEXT glassTlas;
 layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
   GpuInstance instances[];
 };

@@ -24,7 +24,7 @@ vec3 glassTransmittance(vec3 origin, vec3 direction, float tMax, uint mask) {
 #if HAS_GLASS
   glass.opticalDepth = uvec3(0u);
   glass.rememberedCount = 0u;
-  traceRayEXT(sceneTlas, gl_RayFlagsSkipClosestHitShaderEXT, mask, 0, 1, MISS_GLASS, origin, 0.0,
+  traceRayEXT(glassTlas, gl_RayFlagsSkipClosestHitShaderEXT, mask, 0, 1, MISS_GLASS, origin, 0.0,
               direction, tMax, PAYLOAD_GLASS);
   ++raysTraced;
   return exp2(-vec3(glass.opticalDepth) / OPTICAL_DEPTH_SCALE);

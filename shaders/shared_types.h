@@ -64,6 +64,10 @@ using uint = uint32_t;
 // of listed work-groups, then one entry per work-group the temporal pass left something to
 // filter (x | y << 16).
 #define BINDING_FILTER_TILE_LIST 35
+// The glass instances alone, for the glass rays (glassTransmittance): a CPU driver's traversal
+// of the whole scene's structure to reject every opaque instance by its mask cost a quarter of
+// a glass level's frame.
+#define BINDING_GLASS_TLAS 36
 // The most frames the upscaler's history averages (in expected sample weight): a static view
 // has converged after about this many frames.
 #define UPSCALE_MAX_HISTORY_FRAMES 32.0

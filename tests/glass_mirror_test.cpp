@@ -77,6 +77,42 @@ TEST_F(GlassMirrorTest, glass_pane_in_front_of_white_emitter_shows_its_tint) {
   EXPECT_EQ(frame.pipeline.hitGroups, (std::vector<std::string>{"surface.rchit", "glass.rahit"}));
 }
 
+TEST_F(GlassMirrorTest, glass_follows_its_instance_moved_or_hidden_and_opaque_instances_do_not) {
+  // Glass rays trace a structure of their own (the glass instances alone): moving the pane off
+  // the view, hiding it, and moving the opaque wall must all reach what they see.
+  const glm::vec3 tint(0.2f, 0.5f, 0.8f);
+  SceneBuilder builder = wallScene();
+  builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
+                   builder.material(glassMaterial(tint)), at({0, 0, -1}));
+  render::RendererOptions options;
+  options.width = 15;
+  options.height = 15;
+  render::Renderer renderer(context(), compiler(), builder.scene, options);
+  scene::FrameDesc frame;
+  frame.tonemap = scene::Tonemap::Identity;
+  auto centre = [&]() {
+    renderer.renderFrame(frame);
+    const render::Rgba8Image image{15, 15, renderer.pixels()};
+    return glm::ivec3(channel(image, 7, 7, 0), channel(image, 7, 7, 1), channel(image, 7, 7, 2));
+  };
+  const glm::ivec3 tinted(expectedByte(tint.r), expectedByte(tint.g), expectedByte(tint.b));
+  const glm::ivec3 white(255);
+  EXPECT_EQ(centre(), tinted);
+  std::vector<glm::mat4> transforms = {at({0, 0, -2}), at({30, 0, -1})};  // the pane aside
+  renderer.setInstanceTransforms(transforms);
+  EXPECT_EQ(centre(), white);
+  transforms[1] = at({0, 0, -1});  // back in front
+  renderer.setInstanceTransforms(transforms);
+  EXPECT_EQ(centre(), tinted);
+  renderer.setInstanceVisible(1, false);
+  EXPECT_EQ(centre(), white);
+  renderer.setInstanceVisible(1, true);
+  EXPECT_EQ(centre(), tinted);
+  transforms[0] = at({0, 0, -0.5f});  // the wall in front of the pane: no tint
+  renderer.setInstanceTransforms(transforms);
+  EXPECT_EQ(centre(), white);
+}
+
 TEST_F(GlassMirrorTest, overlapping_panes_multiply_and_creation_order_does_not_matter) {
   const std::vector<glm::vec3> tints = {
       {0.9f, 0.8f, 0.7f}, {0.5f, 0.9f, 0.95f}, {0.8f, 0.6f, 0.9f}};
