@@ -82,16 +82,15 @@ class TopLevel {
  private:
   void writeInstances(std::span<const TlasInstance> instances);
   void record(VkCommandBuffer commands, bool update);
+  void upload();  // instances_ to the instance buffer, in order_
 
   const Context* context_;
   uint32_t instanceCount_ = 0;
-  void upload();
-
   std::vector<VkAccelerationStructureInstanceKHR> instances_;
   // The structure's instance list in an order whose halvings split space (bvh_order.hpp): its
   // entry k is instances_[order_[k]].
   std::vector<uint32_t> order_;
-  std::vector<VkAccelerationStructureInstanceKHR> ordered_;
+  std::vector<VkAccelerationStructureInstanceKHR> ordered_;  // what upload() writes
   std::vector<uint8_t> masks_;  // each instance's own mask, for when it is shown again
   Buffer instanceBuffer_;
   Buffer scratch_;

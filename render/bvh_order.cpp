@@ -1,6 +1,7 @@
 #include "render/bvh_order.hpp"
 
 #include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <numeric>
 
@@ -22,24 +23,35 @@ LeafBounds boundsOf(std::span<const LeafBounds> leaves, std::span<const uint32_t
   return box;
 }
 
-// Sorts `indices` by the leaves' centres along `axis`, ties by index (an order that does not
-// depend on the standard library's sort).
-void sortAlong(std::span<const LeafBounds> leaves, std::span<uint32_t> indices, int axis) {
-  std::sort(indices.begin(), indices.end(), [&](uint32_t a, uint32_t b) {
-    const float ca = leaves[a].low[axis] + leaves[a].high[axis];
-    const float cb = leaves[b].low[axis] + leaves[b].high[axis];
-    return ca < cb || (ca == cb && a < b);
-  });
+// Puts the ceil(n/2) leaves whose centres lie lowest along `axis` first (ties broken by index,
+// so which leaves those are does not depend on the standard library); linear time.
+void splitAlong(std::span<const LeafBounds> leaves, std::span<uint32_t> indices, size_t leftCount,
+                int axis) {
+  std::nth_element(indices.begin(), indices.begin() + std::ptrdiff_t(leftCount), indices.end(),
+                   [&](uint32_t a, uint32_t b) {
+                     const float ca = leaves[a].low[axis] + leaves[a].high[axis];
+                     const float cb = leaves[b].low[axis] + leaves[b].high[axis];
+                     return ca < cb || (ca == cb && a < b);
+                   });
 }
 
 void orderRange(std::span<const LeafBounds> leaves, std::span<uint32_t> indices) {
   const size_t count = indices.size();
-  if (count <= 2) return;
+  if (count <= 2) {
+    // A node's two leaves: in order along the axis that separates their centres most.
+    if (count == 2) {
+      const glm::vec3 apart = glm::abs((leaves[indices[1]].low + leaves[indices[1]].high) -
+                                       (leaves[indices[0]].low + leaves[indices[0]].high));
+      const int axis = apart.x >= apart.y && apart.x >= apart.z ? 0 : apart.y >= apart.z ? 1 : 2;
+      splitAlong(leaves, indices, 1, axis);
+    }
+    return;
+  }
   const size_t leftCount = (count + 1) / 2;  // the builder's first child takes ceil(n/2)
   int bestAxis = 0;
   float bestCost = std::numeric_limits<float>::max();
   for (int axis = 0; axis < 3; ++axis) {
-    sortAlong(leaves, indices, axis);
+    splitAlong(leaves, indices, leftCount, axis);
     const float cost =
         surfaceArea(boundsOf(leaves, indices.first(leftCount))) * float(leftCount) +
         surfaceArea(boundsOf(leaves, indices.subspan(leftCount))) * float(count - leftCount);
@@ -48,7 +60,7 @@ void orderRange(std::span<const LeafBounds> leaves, std::span<uint32_t> indices)
       bestAxis = axis;
     }
   }
-  sortAlong(leaves, indices, bestAxis);
+  splitAlong(leaves, indices, leftCount, bestAxis);
   orderRange(leaves, indices.first(leftCount));
   orderRange(leaves, indices.subspan(leftCount));
 }
