@@ -2,23 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <numeric>
+
+#include "scene/box_transform.hpp"
 
 namespace game {
 
 Aabb transformAabb(const Aabb& box, const glm::mat4& transform) {
-  Aabb out{glm::vec3(std::numeric_limits<float>::max()),
-           glm::vec3(std::numeric_limits<float>::lowest())};
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 local((corner & 1) ? box.max.x : box.min.x,
-                          (corner & 2) ? box.max.y : box.min.y,
-                          (corner & 4) ? box.max.z : box.min.z);
-    const glm::vec3 world = glm::vec3(transform * glm::vec4(local, 1.0f));
-    out.min = glm::min(out.min, world);
-    out.max = glm::max(out.max, world);
-  }
-  return out;
+  return scene::transformBox(box, transform);
 }
 
 namespace {

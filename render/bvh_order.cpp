@@ -9,7 +9,7 @@ namespace render {
 namespace {
 
 float surfaceArea(const LeafBounds& box) {
-  const glm::vec3 extent = glm::max(box.high - box.low, glm::vec3(0.0f));
+  const glm::vec3 extent = glm::max(box.max - box.min, glm::vec3(0.0f));
   return extent.x * extent.y + extent.y * extent.z + extent.z * extent.x;
 }
 
@@ -17,8 +17,8 @@ LeafBounds boundsOf(std::span<const LeafBounds> leaves, std::span<const uint32_t
   LeafBounds box{glm::vec3(std::numeric_limits<float>::max()),
                  glm::vec3(-std::numeric_limits<float>::max())};
   for (const uint32_t index : indices) {
-    box.low = glm::min(box.low, leaves[index].low);
-    box.high = glm::max(box.high, leaves[index].high);
+    box.min = glm::min(box.min, leaves[index].min);
+    box.max = glm::max(box.max, leaves[index].max);
   }
   return box;
 }
@@ -29,8 +29,8 @@ void splitAlong(std::span<const LeafBounds> leaves, std::span<uint32_t> indices,
                 int axis) {
   std::nth_element(indices.begin(), indices.begin() + std::ptrdiff_t(leftCount), indices.end(),
                    [&](uint32_t a, uint32_t b) {
-                     const float ca = leaves[a].low[axis] + leaves[a].high[axis];
-                     const float cb = leaves[b].low[axis] + leaves[b].high[axis];
+                     const float ca = leaves[a].min[axis] + leaves[a].max[axis];
+                     const float cb = leaves[b].min[axis] + leaves[b].max[axis];
                      return ca < cb || (ca == cb && a < b);
                    });
 }
@@ -40,8 +40,8 @@ void orderRange(std::span<const LeafBounds> leaves, std::span<uint32_t> indices)
   if (count <= 2) {
     // A node's two leaves: in order along the axis that separates their centres most.
     if (count == 2) {
-      const glm::vec3 apart = glm::abs((leaves[indices[1]].low + leaves[indices[1]].high) -
-                                       (leaves[indices[0]].low + leaves[indices[0]].high));
+      const glm::vec3 apart = glm::abs((leaves[indices[1]].min + leaves[indices[1]].max) -
+                                       (leaves[indices[0]].min + leaves[indices[0]].max));
       const int axis = apart.x >= apart.y && apart.x >= apart.z ? 0 : apart.y >= apart.z ? 1 : 2;
       splitAlong(leaves, indices, 1, axis);
     }

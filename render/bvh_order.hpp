@@ -13,7 +13,7 @@
 namespace render {
 
 struct LeafBounds {
-  glm::vec3 low{0.0f}, high{0.0f};
+  glm::vec3 min{0.0f}, max{0.0f};
 };
 
 // The leaves' indices, ordered so that each recursive halving of the list (the first ceil(n/2),

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstring>
-#include <limits>
 
 #include <glm/gtc/matrix_access.hpp>
 #include <glm/gtc/packing.hpp>
@@ -22,6 +21,7 @@
 #include "render/storage_image.hpp"
 #include "render/texture.hpp"
 #include "render/vulkan_error.hpp"
+#include "scene/box_transform.hpp"
 
 namespace render {
 namespace {
@@ -114,21 +114,6 @@ gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
           glm::vec4(light.size, light.angularDiameterRadians, 0.0f)};
 }
 
-// The world-space box around a mesh's local bounds placed by `objectToWorld`.
-LeafBounds worldBounds(const LeafBounds& local, const glm::mat4& objectToWorld) {
-  LeafBounds world{glm::vec3(std::numeric_limits<float>::max()),
-                   glm::vec3(-std::numeric_limits<float>::max())};
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 point((corner & 1) ? local.high.x : local.low.x,
-                          (corner & 2) ? local.high.y : local.low.y,
-                          (corner & 4) ? local.high.z : local.low.z);
-    const glm::vec3 placed = glm::vec3(objectToWorld * glm::vec4(point, 1.0f));
-    world.low = glm::min(world.low, placed);
-    world.high = glm::max(world.high, placed);
-  }
-  return world;
-}
-
 }  // namespace
 
 Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene::SceneDesc& scene,
@@ -178,11 +163,11 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
                           mesh.vertices[mesh.indices[t]].position};
       for (size_t corner = 1; corner < 3; ++corner) {
         const glm::vec3 position = mesh.vertices[mesh.indices[t + corner]].position;
-        triangle.low = glm::min(triangle.low, position);
-        triangle.high = glm::max(triangle.high, position);
+        triangle.min = glm::min(triangle.min, position);
+        triangle.max = glm::max(triangle.max, position);
       }
-      meshBox.low = glm::min(meshBox.low, triangle.low);
-      meshBox.high = glm::max(meshBox.high, triangle.high);
+      meshBox.min = glm::min(meshBox.min, triangle.min);
+      meshBox.max = glm::max(meshBox.max, triangle.max);
       triangles.push_back(triangle);
     }
     meshBounds.push_back(meshBox);
@@ -302,7 +287,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     const scene::InstanceDesc& instance = scene.instances[i];
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
-    tlasInstance.bounds = worldBounds(meshBounds[instance.mesh], instance.objectToWorld);
+    tlasInstance.bounds = scene::transformBox(meshBounds[instance.mesh], instance.objectToWorld);
     tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody);
     if (alphaMasked(scene, instance)) {
       // Not opaque, so the alpha test (alpha.rahit) runs for every ray that meets it.
