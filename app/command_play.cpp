@@ -45,6 +45,7 @@ play::PlayOptions playOptions(const Options& options) {
   playing.quitAfterTicks = options.quitAfterTicks;
   playing.hudOff = options.hudOff;
   playing.upscale = options.upscale;
+  playing.fixedScale = options.fixedScale;
   playing.record = options.record;
   playing.capture = options.capture;
   playing.author = options.author;

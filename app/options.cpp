@@ -105,6 +105,11 @@ const std::vector<OptionSpec> kOptions{
      "",
      "scale the picture to the window with a bilinear blit instead of temporal\nupscaling",
      {"play"}},
+    {"--fixed-scale",
+     "",
+     "keep the render scale; without it, play traces fewer pixels while frames\ntake longer "
+     "than 30 fps allows (the settings can turn that off)",
+     {"play"}},
     {"--device", "SEL", "device index or part of its name (see `sightline devices`)", kRendering},
     {"--validate", "", "enable the Vulkan validation layer (with synchronization checks)",
      join(kRendering, {"devices"})},
@@ -309,6 +314,8 @@ Options parseOptions(int argc, char** argv) {
       options.upscaleSize = {width, height};
     } else if (argument == "--no-upscale") {
       options.upscale = false;
+    } else if (argument == "--fixed-scale") {
+      options.fixedScale = true;
     } else if (argument == "--device") {
       options.device = value();
     } else if (argument == "--validate") {

@@ -52,8 +52,9 @@ class SettingsReader {
 
   Settings read() {
     Settings settings;
-    file_.reportUnknownKeys("", {kVersionKey, "mouse_sensitivity", "invert_y",
-                                 "field_of_view_degrees", "render_scale", "vsync", "key_bindings"});
+    file_.reportUnknownKeys(
+        "", {kVersionKey, "mouse_sensitivity", "invert_y", "field_of_view_degrees", "render_scale",
+             "vsync", "dynamic_render_scale", "key_bindings"});
     readNumber("mouse_sensitivity", kMinMouseSensitivity, LowerBound::exclusive,
                kMaxMouseSensitivity, settings.mouseSensitivity);
     readBoolean("invert_y", settings.invertY);
@@ -67,6 +68,7 @@ class SettingsReader {
     readNumber("render_scale", kMinRenderScale, LowerBound::exclusive, kMaxRenderScale,
                settings.renderScale);
     readBoolean("vsync", settings.vsync);
+    readBoolean("dynamic_render_scale", settings.dynamicRenderScale);
     readKeyBindings(settings.keyBindings);
     return settings;
   }
@@ -178,6 +180,7 @@ void saveSettings(const Settings& settings, const fs::path& file) {
                                       : Json(nullptr);
   json["render_scale"] = asShortestDouble(settings.renderScale);
   json["vsync"] = settings.vsync;
+  json["dynamic_render_scale"] = settings.dynamicRenderScale;
   json["key_bindings"] = Json::object();
   for (const auto& [action, key] : settings.keyBindings) json["key_bindings"][action] = key;
   writeFileAtomically(file, json.dump(2) + "\n");

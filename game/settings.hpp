@@ -16,6 +16,8 @@ struct Settings {
   std::optional<float> fieldOfViewDegrees;
   float renderScale = 0.25f;  // internal resolution as a fraction of the window, (0.1, 1]
   bool vsync = true;
+  // Trace fewer pixels while frames take longer than 30 fps allows (play/dynamic_scale.hpp).
+  bool dynamicRenderScale = true;
   // Action -> GLFW key name without the GLFW_KEY_ prefix ("W", "SPACE", "F5").
   std::map<std::string, std::string> keyBindings = defaultKeyBindings();
 

@@ -1,6 +1,7 @@
 #include "play/frame_parts.hpp"
 
 #include <cstdio>
+#include <numeric>
 
 #include "render/frame_time_percentiles.hpp"
 
@@ -30,15 +31,18 @@ void FramePartTimes::endFrame() {
   }
 }
 
-std::string FramePartTimes::mediansText(unsigned long long probeFrames) const {
+std::string FramePartTimes::partsText(unsigned long long probeFrames) const {
   std::string text;
   char item[64];
   for (std::size_t part = 0; part < kFrameParts; ++part) {
-    std::snprintf(item, sizeof item, "%s%s %.2f", part ? "  " : "", kPartNames[part],
-                  render::frameTimePercentiles(frames_[part]).p50);
+    const std::vector<double>& times = frames_[part];
+    const double mean =
+        times.empty() ? 0.0 : std::accumulate(times.begin(), times.end(), 0.0) / times.size();
+    std::snprintf(item, sizeof item, "%s%s %.2f / %.2f", part ? "  " : "", kPartNames[part],
+                  render::frameTimePercentiles(times).p50, mean);
     text += item;
   }
-  std::snprintf(item, sizeof item, " ms (medians of %zu frames; %llu probe frames)",
+  std::snprintf(item, sizeof item, " ms (median / mean of %zu frames; %llu probe frames)",
                 frames_[0].size(), probeFrames);
   return text + item;
 }

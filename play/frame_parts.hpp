@@ -23,9 +23,9 @@ class FramePartTimes {
   void start(FramePart part);
   // Ends the part under way and closes the frame's record.
   void endFrame();
-  // "input 0.05  ticks 8.10  picture 21.30  interface 0.40  present 3.20 ms (medians of 600
-  // frames; 150 probe frames)"
-  std::string mediansText(unsigned long long probeFrames) const;
+  // "input 0.05 / 0.06  ticks 0.10 / 2.40  picture 21.30 / 22.10  interface 0.40 / 0.41
+  // present 3.20 / 3.30 ms (median / mean of 600 frames; 150 probe frames)"
+  std::string partsText(unsigned long long probeFrames) const;
 
  private:
   using Clock = std::chrono::steady_clock;

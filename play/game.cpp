@@ -69,6 +69,7 @@ int Game::run(const fs::path& firstLevel) {
     frameMilliseconds.push_back(elapsed * 1000.0);
     bool quitting = false;
     if (!paused_) {
+      adjustPictureSize(elapsed);
       gatherMouseLook(window_, look_, settings_);
       parts.start(FramePart::Ticks);
       runTicks(elapsed);
@@ -113,8 +114,8 @@ int Game::run(const fs::path& firstLevel) {
                   static_cast<unsigned long long>(framesShown_),
                   double(framesShown_) / std::max(now - started, 1e-3),
                   render::frameTimePercentiles(frameMilliseconds).text().c_str());
-      std::printf("frame parts: %s\n",
-                  parts.mediansText(played_.simulation->probeFrames()).c_str());
+      std::printf("frame parts: %s\n", parts.partsText(played_.simulation->probeFrames()).c_str());
+      reportPictureScales();
       break;
     }
     if (menu_.quitRequested) glfwSetWindowShouldClose(window_, GLFW_TRUE);
@@ -145,6 +146,7 @@ void Game::load(const fs::path& file) {
 }
 
 void Game::levelStarted() {
+  dynamicScale_.reset();  // the next frame starts one for the new renderer, at the full size
   played_.simulation->setAuthoring(flying_);
   if (flying_) played_.timed = false;
   if (!watcher_ || watchedFile_ != played_.file) {
@@ -299,6 +301,42 @@ void Game::runTicks(double elapsed) {
     if (options_.quitAfterTicks != 0 && ticksPlayed_ >= options_.quitAfterTicks) return;
     if (simulation.outcome() != game::Outcome::Playing) return;
   }
+}
+
+void Game::adjustPictureSize(double frameSeconds) {
+  render::Renderer& renderer = played_.simulation->renderer();
+  const bool wanted = !options_.fixedScale && !options_.pictureSize && settings_.dynamicRenderScale;
+  if (wanted != dynamicScale_.has_value()) {
+    if (wanted)
+      dynamicScale_.emplace(renderer.width(), renderer.height());
+    else
+      dynamicScale_.reset();
+    renderer.setPictureSize(renderer.width(), renderer.height());
+    return;
+  }
+  if (!dynamicScale_) return;
+  if (dynamicScale_->frameFinished(frameSeconds * 1000.0)) {
+    const PictureSize size = dynamicScale_->size();
+    renderer.setPictureSize(size.width, size.height);
+  }
+  pictureScales_.push_back(dynamicScale_->scale());
+}
+
+void Game::reportPictureScales() const {
+  if (pictureScales_.empty()) {
+    std::printf("picture scale: 1 (fixed)\n");
+    return;
+  }
+  std::vector<float> sorted = pictureScales_;
+  std::sort(sorted.begin(), sorted.end());
+  const size_t atOrAboveOne =
+      size_t(sorted.end() - std::lower_bound(sorted.begin(), sorted.end(), 1.0f));
+  std::printf(
+      "picture scale: p50 %.3f  min %.3f  max %.3f, full size in %.0f %% of %zu frames "
+      "(dynamic, aiming at %.0f fps)\n",
+      double(sorted[sorted.size() / 2]), double(sorted.front()), double(sorted.back()),
+      100.0 * double(atOrAboveOne) / double(sorted.size()), sorted.size(),
+      1000.0 / DynamicScale::kTargetMilliseconds);
 }
 
 void Game::updateTitle(double fps) {

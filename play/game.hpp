@@ -5,11 +5,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "game/level_watcher.hpp"
 #include "game/settings.hpp"
+#include "play/dynamic_scale.hpp"
 #include "play/input.hpp"
 #include "play/level_flow.hpp"
 #include "play/menu.hpp"
@@ -39,6 +41,11 @@ class Game {
   void setPaused(bool paused);
   void handlePresses();
   void runTicks(double elapsed);
+  // The dynamic render scale after a played frame of `frameSeconds`: it follows the settings
+  // (on unless --fixed-scale, --size or the menu says otherwise) and sets the next picture size.
+  void adjustPictureSize(double frameSeconds);
+  // The dynamic render scale over the frames played, for --quit-after-ticks's report.
+  void reportPictureScales() const;
   void updateTitle(double fps);
   void setFlying(bool flying);
   // After any level start (load, F5, a loss's restart, a win's next level): the fly camera, the
@@ -75,6 +82,8 @@ class Game {
   double watchedAt_ = 0.0;                       // when the watcher last looked
   uint64_t ticksPlayed_ = 0;                     // over all levels, for --quit-after-ticks
   uint64_t framesShown_ = 0;
+  std::optional<DynamicScale> dynamicScale_;  // none: the picture is the whole render size
+  std::vector<float> pictureScales_;          // each played frame's, for the report at the end
   double fps_ = 0.0;
   bool screenshotRequested_ = false;
   bool captureFailed_ = false;

@@ -10,6 +10,7 @@
 #include "play/level_flow.hpp"
 #include "play/level_list.hpp"
 #include "render/presenter.hpp"
+#include "render/renderer.hpp"
 
 namespace play {
 namespace fs = std::filesystem;
@@ -64,16 +65,20 @@ void drawSettings(Menu& menu, const PlayedLevel& played, game::Settings& setting
   ImGui::SliderFloat("Render scale", &settings.renderScale, 0.1f, 1.0f, "%.2f");
   settings.renderScale = std::clamp(settings.renderScale, 0.1f, 1.0f);
   if (ImGui::Checkbox("Vsync (V)", &settings.vsync)) presenter.setVsync(settings.vsync);
+  ImGui::Checkbox("Hold 30 fps (fewer pixels while frames run long)", &settings.dynamicRenderScale);
   if (settings.fieldOfViewDegrees != played.activeFov ||
       settings.renderScale != played.activeScale) {
     ImGui::TextUnformatted("Field of view and render scale apply when a level starts.");
     if (ImGui::Button("Apply now (restarts the level)")) menu.pendingLevel = played.file;
   }
+  const render::Renderer& renderer = played.simulation->renderer();
   if (played.outputWidth > 0) {
-    ImGui::Text("Picture: %ux%u, upscaled to %ux%u, scaled to the window", played.renderWidth,
+    ImGui::Text("Picture: %ux%u of %ux%u, upscaled to %ux%u, scaled to the window",
+                renderer.pictureWidth(), renderer.pictureHeight(), played.renderWidth,
                 played.renderHeight, played.outputWidth, played.outputHeight);
   } else {
-    ImGui::Text("Picture: %ux%u, scaled to the window", played.renderWidth, played.renderHeight);
+    ImGui::Text("Picture: %ux%u of %ux%u, scaled to the window", renderer.pictureWidth(),
+                renderer.pictureHeight(), played.renderWidth, played.renderHeight);
   }
 
   ImGui::Separator();

@@ -16,6 +16,8 @@ struct PlayOptions {
   bool hudOff = false;          // no heads-up display or text over the picture
   // Temporal upscaling of the picture to the window's size (false: the window's blit scales it).
   bool upscale = true;
+  // No dynamic render scale (--fixed-scale); --size fixes the picture too.
+  bool fixedScale = false;
   std::optional<std::filesystem::path> record;   // write the first level's run as a replay
   std::optional<std::filesystem::path> capture;  // the last frame's window image (PNG)
   bool author = false;                  // --author: the fly camera from the start (F4 toggles it)

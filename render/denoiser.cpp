@@ -176,7 +176,7 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
 }
 
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-                      uint32_t iterations) {
+                      uint32_t iterations, uint32_t width, uint32_t height) {
   // The temporal pass lists the work-groups with something to filter, from an empty list.
   memoryBarrier(commands,
                 VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
@@ -190,7 +190,8 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
   vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
-  vkCmdDispatch(commands, filterTiles_->width(), filterTiles_->height(), 1);
+  vkCmdDispatch(commands, (width + groupSize_ - 1) / groupSize_,
+                (height + groupSize_ - 1) / groupSize_, 1);
   memoryBarrier(
       commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,

@@ -50,10 +50,11 @@ class Denoiser {
   // `reads`: Auto picks the shared-memory tile on GPUs and per-pixel reads on CPU drivers.
   void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout, NeighbourhoodReads reads);
 
-  // Temporal pass then `iterations` a-trous passes; the caller has ordered ray-gen's writes
-  // before and orders the tonemap's reads after. Each call stamps a new frame.
+  // Temporal pass then `iterations` a-trous passes over the top-left width x height of the
+  // images (the picture's size); the caller has ordered ray-gen's writes before and orders the
+  // tonemap's reads after. Each call stamps a new frame.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t iterations);
+              uint32_t iterations, uint32_t width, uint32_t height);
 
   // Test and debugging hooks (they submit and wait).
   std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;

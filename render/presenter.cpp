@@ -521,7 +521,7 @@ void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, u
 
   VkImageBlit blit{};
   blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.srcOffsets[1] = {int32_t(renderer.outputWidth()), int32_t(renderer.outputHeight()), 1};
+  blit.srcOffsets[1] = {int32_t(renderer.shownWidth()), int32_t(renderer.shownHeight()), 1};
   blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_, &blit.dstOffsets[0],
                &blit.dstOffsets[1]);

@@ -118,7 +118,11 @@ gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
 
 Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene::SceneDesc& scene,
                    const RendererOptions& options)
-    : context_(context), options_(options), environment_(scene.environment) {
+    : context_(context),
+      options_(options),
+      pictureWidth_(options.width),
+      pictureHeight_(options.height),
+      environment_(scene.environment) {
   // Interleaving pays on CPU drivers (each thread's block of rows sees every part of the image);
   // on a GPU it only costs coherence: 2-8 % at 4K on the H100 (docs/PERFORMANCE.md).
   if (options_.rowGroups == 0) options_.rowGroups = context.isCpuDevice() ? 8 : 1;
@@ -761,7 +765,17 @@ void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
+void Renderer::setPictureSize(uint32_t width, uint32_t height) {
+  if (width == 0 || height == 0 || width > options_.width || height > options_.height)
+    throw RenderError("setPictureSize: " + std::to_string(width) + "x" + std::to_string(height) +
+                      " is not within the render size " + std::to_string(options_.width) + "x" +
+                      std::to_string(options_.height));
+  pictureWidth_ = width;
+  pictureHeight_ = height;
+}
+
 void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly) {
+  // The render size's aspect for every picture size: the same view with fewer pixels.
   const CameraBasis camera =
       cameraBasis(frame.camera, float(options_.width) / float(options_.height));
 
@@ -773,8 +787,9 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.skyZenith = glm::vec4(environment_.skyZenith, 0.0f);
   uniforms.skyHorizon = glm::vec4(environment_.skyHorizon, 0.0f);
   uniforms.ambient = glm::vec4(environment_.ambient, 0.0f);
-  uniforms.sizeFrameLights =
-      glm::uvec4(options_.width, options_.height, frame.frameIndex, lightCount_);
+  const glm::uvec2 size = probeOnly ? glm::uvec2(options_.width, options_.height)
+                                    : glm::uvec2(pictureWidth_, pictureHeight_);
+  uniforms.sizeFrameLights = glm::uvec4(size, frame.frameIndex, lightCount_);
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
   uniforms.mirrorBounces = glm::uvec4(mirrorBounces_, 0u, 0u, 0u);
@@ -795,6 +810,8 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.previousCameraRight = previous.cameraRight;
   uniforms.previousCameraUp = previous.cameraUp;
   uniforms.previousCameraForward = previous.cameraForward;
+  uniforms.previousSize =
+      glm::uvec4(previous.sizeFrameLights.x, previous.sizeFrameLights.y, 0u, 0u);
   uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
                                 denoiserIterations(frame), instancesMoved_ ? 1u : 0u);
   if (probeOnly) {  // un-jittered, launched over the focus regions' box
@@ -856,7 +873,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
                           &descriptorSets_[parity_], 0, nullptr);
   if (!probeOnly)
-    rayTracingPipeline_->recordTrace(commands, options_.width, options_.height);
+    rayTracingPipeline_->recordTrace(commands, pictureWidth_, pictureHeight_);
   else if (focusBox_)
     rayTracingPipeline_->recordTrace(commands, focusBox_->x1 - focusBox_->x0,
                                      focusBox_->y1 - focusBox_->y0);
@@ -873,7 +890,8 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
   stamp(1);
   if (denoiser_ && !probeOnly) {
-    denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_);
+    denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_,
+                      pictureWidth_, pictureHeight_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
   }
@@ -882,7 +900,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, tonemapPipeline_);
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
                             &descriptorSets_[parity_], 0, nullptr);
-    vkCmdDispatch(commands, (options_.width + 7) / 8, (options_.height + 7) / 8, 1);
+    vkCmdDispatch(commands, (pictureWidth_ + 7) / 8, (pictureHeight_ + 7) / 8, 1);
     if (upscaler_) {
       memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                     VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
@@ -898,7 +916,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                        VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.imageExtent = {outputWidth(), outputHeight(), 1};
+    region.imageExtent = {shownWidth(), shownHeight(), 1};
     vkCmdCopyImageToBuffer(commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            readback_.handle(), 1, &region);
     memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
@@ -1008,7 +1026,7 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   stats.secondaryRays = counters.secondaryRays;
   if (probeOnly) return stats;
   if (readback) {
-    pixels_.resize(readback_.size());
+    pixels_.resize(size_t(shownWidth()) * shownHeight() * 4);
     readback_.read(pixels_.data(), pixels_.size());
   }
   parity_ ^= 1u;

@@ -139,9 +139,21 @@ class Renderer {
   const PipelineDescription& pipelineDescription() const { return pipelineDescription_; }
   uint32_t width() const { return options_.width; }  // the render size: rays, probes
   uint32_t height() const { return options_.height; }
-  // The picture's size: the output size with temporal upscaling, else the render size.
+  // Full frames from the next one trace only the top-left width x height of the render size
+  // (a render scale that changes while playing): the camera keeps its field of view and aspect,
+  // with fewer pixels. Probe frames keep the whole render size, so what the probes read does not
+  // depend on it. The denoiser's and the upscaler's histories carry across a change.
+  void setPictureSize(uint32_t width, uint32_t height);
+  uint32_t pictureWidth() const { return pictureWidth_; }
+  uint32_t pictureHeight() const { return pictureHeight_; }
+  // The size of outputImage() and of a readback: the output size with temporal upscaling, else
+  // the render size.
   uint32_t outputWidth() const { return upscaler_ ? upscaler_->outputWidth() : width(); }
   uint32_t outputHeight() const { return upscaler_ ? upscaler_->outputHeight() : height(); }
+  // How much of outputImage() the last full frame wrote, from its top-left corner: the output
+  // size with temporal upscaling, else the picture size.
+  uint32_t shownWidth() const { return upscaler_ ? upscaler_->outputWidth() : pictureWidth_; }
+  uint32_t shownHeight() const { return upscaler_ ? upscaler_->outputHeight() : pictureHeight_; }
   size_t triangleCount() const { return triangleCount_; }
 
  private:
@@ -160,6 +172,8 @@ class Renderer {
 
   const Context& context_;
   RendererOptions options_;
+  uint32_t pictureWidth_ = 0;  // setPictureSize's; the render size until it is called
+  uint32_t pictureHeight_ = 0;
   uint32_t lightCount_ = 0;
   size_t triangleCount_ = 0;
   scene::EnvironmentDesc environment_;

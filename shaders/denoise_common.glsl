@@ -33,6 +33,13 @@ bool insideImage(ivec2 pixel) {
          all(lessThan(pixel, ivec2(frame.sizeFrameLights.xy)));
 }
 
+// The history images hold the previous full frame's picture, whose size differs from this
+// frame's after a change of the render scale.
+bool insidePreviousImage(ivec2 pixel) {
+  return all(greaterThanEqual(pixel, ivec2(0))) &&
+         all(lessThan(pixel, ivec2(frame.previousSize.xy)));
+}
+
 // The raw visibility estimate (rgb), with anything non-finite replaced so it never spreads,
 // and the width of the penumbra there in pixels (a; below 0 where no sample met a caster).
 vec4 rawSample(ivec2 pixel) {

@@ -114,7 +114,7 @@ void main() {
     for (int j = 0; j <= 1; ++j) {
       for (int i = 0; i <= 1; ++i) {
         ivec2 tap = base + ivec2(i, j);
-        if (!insideImage(tap)) continue;
+        if (!insidePreviousImage(tap)) continue;
         float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         if (weight <= 0.0) continue;
         if (imageLoad(instancePreviousImage, tap).x != instance) continue;
@@ -135,6 +135,13 @@ void main() {
     // while the view moves, cap L so the blur's variance stays about a pixel squared (a sharp
     // shadow edge would otherwise soften frame after frame). A still view (f = 0) keeps 32.
     float blur = f.x * (1.0 - f.x) + f.y * (1.0 - f.y);
+    if (frame.previousSize.xy != frame.sizeFrameLights.xy) {
+      // The resampling's blur is in the previous picture's pixels: after a change of the render
+      // scale it is counted in this picture's (a larger previous picture blurs less of it).
+      vec2 toCurrent = vec2(frame.sizeFrameLights.xy) / vec2(frame.previousSize.xy);
+      vec2 spread = f * (1.0 - f) * toCurrent * toCurrent;
+      blur = spread.x + spread.y;
+    }
     historyCap = clamp(1.0 / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
     if (weightSum > 1e-3) {
       history = historySum / weightSum;

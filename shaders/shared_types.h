@@ -134,6 +134,9 @@ struct FrameUniforms {
   // x: the most mirror bounces a camera path takes, the level's cap (a uniform, not a variant
   // define: levels that differ only in it share one pipeline and its compile)
   uvec4 mirrorBounces;
+  // xy: the size of the previous full frame's picture, whose extent of the images the
+  // denoiser's history holds (it differs from this frame's while the render scale changes)
+  uvec4 previousSize;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials

@@ -62,6 +62,7 @@ TEST(Settings, defaults_are_the_documented_ones) {
   EXPECT_FALSE(settings.fieldOfViewDegrees.has_value());  // each level's own
   EXPECT_FLOAT_EQ(settings.renderScale, 0.25f);
   EXPECT_TRUE(settings.vsync);
+  EXPECT_TRUE(settings.dynamicRenderScale);
   const std::map<std::string, std::string> expected = {
       {"forward", "W"},    {"back", "S"},     {"left", "A"},        {"right", "D"},
       {"jump", "SPACE"},   {"interact", "E"}, {"adjust_down", "Q"}, {"adjust_up", "R"},
@@ -84,6 +85,7 @@ TEST_F(SettingsFile, round_trips_every_field) {
   settings.fieldOfViewDegrees = 95.5f;
   settings.renderScale = 0.6f;
   settings.vsync = false;
+  settings.dynamicRenderScale = false;
   settings.keyBindings["jump"] = "LEFT_CONTROL";
   settings.keyBindings["forward"] = "UP";
   const fs::path file = root_ / "settings.json";
