@@ -123,6 +123,11 @@ class UpscaleBench {
 
   const char* walkName() const { return walk_.name; }
 
+  // A side of the render size times --picture-scale, as play's dynamic render scale rounds it.
+  uint32_t scaledSide(uint32_t side) const {
+    return std::clamp(uint32_t(std::lround(float(side) * options_.pictureScale)), 1u, side);
+  }
+
   // The camera walking at walking speed where the whole moving run has room.
   scene::CameraDesc walkedAt(uint32_t frame) const {
     scene::CameraDesc camera = level_.camera;
@@ -167,6 +172,7 @@ class UpscaleBench {
       const std::function<scene::CameraDesc(uint32_t)>& cameraAt, uint32_t outputWidth,
       uint32_t outputHeight) {
     auto r = renderer(options_.width, options_.height, outputWidth, outputHeight);
+    r->setPictureSize(scaledSide(options_.width), scaledSide(options_.height));
     std::vector<std::pair<Picture, double>> results;
     const uint32_t last = checkpoints.back();
     for (uint32_t i = 1; i <= last; ++i) {
@@ -261,6 +267,10 @@ int commandBenchUpscale(const Options& options) {
               bench.context().deviceInfo().name.c_str(), samples, outputWidth, outputHeight);
   std::printf("moving: the camera walks %s at %.2f m a frame\n", bench.walkName(),
               double(kWalkPerFrame));
+  if (options.pictureScale < 1.0f)
+    std::printf("the upscaled runs trace %ux%u of the %ux%u (--picture-scale %g)\n",
+                bench.scaledSide(options.width), bench.scaledSide(options.height), options.width,
+                options.height, double(options.pictureScale));
 
   const fs::path outDirectory = options.out.value_or(fs::path("out"));
   fs::create_directories(outDirectory);

@@ -118,6 +118,11 @@ const std::vector<OptionSpec> kOptions{
      "N",
      "samples per pixel for --reference (default 256)",
      {"render", "bench-quality", "bench-upscale"}},
+    {"--picture-scale",
+     "S",
+     "the upscaled runs trace S of each side of the render size, as play's\ndynamic render "
+     "scale does (default 1)",
+     {"bench-upscale"}},
     {"--watch", "", "keep running and re-render on every save", {"preview"}},
     {"--watch-limit",
      "N",
@@ -302,6 +307,13 @@ Options parseOptions(int argc, char** argv) {
       if (end == text.c_str() || *end != '\0' || !(options.exposure >= 0.0f) ||
           !std::isfinite(options.exposure))
         throw UsageError("--exposure: expected a number >= 0, got '" + text + "'");
+    } else if (argument == "--picture-scale") {
+      const std::string text = value();
+      char* end = nullptr;
+      options.pictureScale = std::strtof(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(options.pictureScale > 0.0f) ||
+          !(options.pictureScale <= 1.0f))
+        throw UsageError("--picture-scale: expected a number in (0, 1], got '" + text + "'");
     } else if (argument == "--row-groups") {
       options.rowGroups = parseCount("--row-groups", value(), 1, 64);
     } else if (argument == "--no-subgroup-counters") {

@@ -44,6 +44,9 @@ struct Options {
   bool watch = false;
   bool reference = false;  // render: accumulate raw soft-shadow samples, no denoiser
   uint32_t samplesPerPixel = 256;
+  // bench-upscale --picture-scale S: the upscaled runs trace S of each side of the render size
+  // (what play's dynamic render scale does), in (0, 1]
+  float pictureScale = 1.0f;
   uint32_t watchLimit = 0;                     // 0: no limit
   std::optional<std::filesystem::path> trace;  // replay: per-tick CSV of probes and player
   bool updateImages = false;    // replay: write image checkpoints instead of comparing
