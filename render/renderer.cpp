@@ -122,6 +122,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       options_(options),
       pictureWidth_(options.width),
       pictureHeight_(options.height),
+      shownPicture_(options.width, options.height),
       environment_(scene.environment) {
   // Interleaving pays on CPU drivers (each thread's block of rows sees every part of the image);
   // on a GPU it only costs coherence: 2-8 % at 4K on the H100 (docs/PERFORMANCE.md).
@@ -872,11 +873,13 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                     rayTracingPipeline_->handle());
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipelineLayout_, 0, 1,
                           &descriptorSets_[parity_], 0, nullptr);
-  if (!probeOnly)
+  if (!probeOnly) {
     rayTracingPipeline_->recordTrace(commands, pictureWidth_, pictureHeight_);
-  else if (focusBox_)
+    shownPicture_ = glm::uvec2(pictureWidth_, pictureHeight_);
+  } else if (focusBox_) {
     rayTracingPipeline_->recordTrace(commands, focusBox_->x1 - focusBox_->x0,
                                      focusBox_->y1 - focusBox_->y0);
+  }
   if (!probeRequest_.exposure.empty()) {
     // Both launches add into the probe results.
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,

@@ -112,7 +112,7 @@ class Renderer {
   void setLightTint(uint32_t light, const glm::vec3& tint);
 
   // RGBA8, sRGB-encoded, rows top to bottom, of the last frame rendered with readback, at the
-  // output size.
+  // shown size (shownWidth() x shownHeight()).
   const std::vector<uint8_t>& pixels() const { return pixels_; }
   // The last frame's display image at the output size (R8G8B8A8_UNORM holding sRGB-encoded
   // bytes, usable as a
@@ -146,14 +146,14 @@ class Renderer {
   void setPictureSize(uint32_t width, uint32_t height);
   uint32_t pictureWidth() const { return pictureWidth_; }
   uint32_t pictureHeight() const { return pictureHeight_; }
-  // The size of outputImage() and of a readback: the output size with temporal upscaling, else
-  // the render size.
+  // The size of outputImage(): the output size with temporal upscaling, else the render size.
   uint32_t outputWidth() const { return upscaler_ ? upscaler_->outputWidth() : width(); }
   uint32_t outputHeight() const { return upscaler_ ? upscaler_->outputHeight() : height(); }
-  // How much of outputImage() the last full frame wrote, from its top-left corner: the output
-  // size with temporal upscaling, else the picture size.
-  uint32_t shownWidth() const { return upscaler_ ? upscaler_->outputWidth() : pictureWidth_; }
-  uint32_t shownHeight() const { return upscaler_ ? upscaler_->outputHeight() : pictureHeight_; }
+  // How much of outputImage() the last full frame wrote, from its top-left corner (and the size
+  // of pixels() after a readback): the output size with temporal upscaling, else that frame's
+  // picture size.
+  uint32_t shownWidth() const { return upscaler_ ? upscaler_->outputWidth() : shownPicture_.x; }
+  uint32_t shownHeight() const { return upscaler_ ? upscaler_->outputHeight() : shownPicture_.y; }
   size_t triangleCount() const { return triangleCount_; }
 
  private:
@@ -174,6 +174,7 @@ class Renderer {
   RendererOptions options_;
   uint32_t pictureWidth_ = 0;  // setPictureSize's; the render size until it is called
   uint32_t pictureHeight_ = 0;
+  glm::uvec2 shownPicture_{0u};  // the picture size of the last full frame recorded
   uint32_t lightCount_ = 0;
   size_t triangleCount_ = 0;
   scene::EnvironmentDesc environment_;
