@@ -49,6 +49,7 @@ scene::SceneDesc buildSceneDesc(const Level& level, const World& world) {
     instance.meshMaterials = entity.meshMaterials;
     instance.objectToWorld = world.entityTransform(e);
     instance.castsShadow = entity.castsShadow;
+    instance.shadowsDirectionalOnly = entity.shadowsDirectionalOnly;
     scene.instances.push_back(std::move(instance));
   }
   return scene;

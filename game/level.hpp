@@ -53,6 +53,8 @@ struct Entity {
   glm::vec3 rotationDegrees{0.0f};  // x: pitch, y: yaw, z: roll; applied yaw, pitch, roll
   glm::vec3 scale{1.0f};
   bool castsShadow = true;
+  // "casts_shadow": "directional": it shadows directional lights only (with castsShadow).
+  bool shadowsDirectionalOnly = false;
   std::optional<Mover> mover;  // at most one of mover and interactable
   std::optional<Interactable> interactable;
 };

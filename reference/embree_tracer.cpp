@@ -172,7 +172,8 @@ EmbreeTracer::EmbreeTracer(const scene::SceneDesc& scene, const render::Pipeline
     rtcSetGeometryInstancedScene(instance, meshScene);
     rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
                             &desc.objectToWorld[0][0]);
-    rtcSetGeometryMask(instance, render::gpu::instanceMask(glass, desc.castsShadow));
+    rtcSetGeometryMask(instance, render::gpu::instanceMask(glass, desc.castsShadow, false,
+                                                           desc.shadowsDirectionalOnly));
     rtcCommitGeometry(instance);
     rtcAttachGeometryByID(s.top, instance, i);  // instID = the scene's instance index
     s.placed.emplace_back(i, desc.objectToWorld);
@@ -331,14 +332,20 @@ class PixelTracer {
     ++counts.secondary;
   }
 
-  void traceShadow(const glm::vec3& origin, const glm::vec3& toLight, float distance) {
+  // `directional`: towards a directional light, whose rays also meet the casters of directional
+  // shadows alone (as shadow_rays.glsl masks them).
+  void traceShadow(const glm::vec3& origin, const glm::vec3& toLight, float distance,
+                   bool directional) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray = makeRay(origin, toLight, distance, MASK_SHADOW_CASTER);
+    RTCRay ray = makeRay(origin, toLight, distance,
+                         MASK_SHADOW_CASTER | (directional ? MASK_SHADOW_DIRECTIONAL : 0u));
     rtcOccluded1(top_, &context, &ray);
     ++counts.secondary;
     const bool blocked = !(ray.tfar >= 0.0f);  // Embree sets tfar to -inf on a hit
-    if (!blocked && features_.glass) traceGlass(origin, toLight, distance, MASK_GLASS_SHADOW);
+    if (!blocked && features_.glass)
+      traceGlass(origin, toLight, distance,
+                 MASK_GLASS_SHADOW | (directional ? MASK_GLASS_SHADOW_DIRECTIONAL : 0u));
   }
 
   // shadeSurface: hard lights one ray each; soft lights share the variant's samples.
@@ -347,6 +354,7 @@ class PixelTracer {
     bool softLightReaches = false;
     glm::vec3 softDirection{0.0f};
     float softDistance = 0.0f;
+    bool softDirectional = false;
     for (const Light& light : lights_) {
       glm::vec3 toLight;
       float distance;
@@ -357,14 +365,15 @@ class PixelTracer {
           softLightReaches = true;
           softDirection = toLight;
           softDistance = distance;
+          softDirectional = light.type == LightType::Directional;
         }
         continue;
       }
-      traceShadow(shadowOrigin, toLight, distance);
+      traceShadow(shadowOrigin, toLight, distance, light.type == LightType::Directional);
     }
     if (!softLightReaches) return;
     for (uint32_t s = 0; s < features_.softShadowSamples; ++s)
-      traceShadow(shadowOrigin, softDirection, softDistance * 0.9999f);
+      traceShadow(shadowOrigin, softDirection, softDistance * 0.9999f, softDirectional);
   }
 
   RTCScene top_;

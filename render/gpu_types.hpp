@@ -26,10 +26,17 @@ static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBE
 
 namespace render::gpu {
 // An instance's TLAS visibility mask: glass is seen only by glass rays, everything else by
-// surface rays; shadow casters also by the matching shadow rays.
-inline constexpr uint32_t instanceMask(bool glass, bool castsShadow, bool playerBody = false) {
+// surface rays; shadow casters also by the matching shadow rays (those towards directional
+// lights only, for a caster of directional shadows alone).
+inline constexpr uint32_t instanceMask(bool glass, bool castsShadow, bool playerBody = false,
+                                       bool shadowsDirectionalOnly = false) {
   if (playerBody) return MASK_BODY;
-  return glass ? MASK_GLASS | (castsShadow ? MASK_GLASS_SHADOW : 0u)
-               : MASK_VISIBLE | (castsShadow ? MASK_SHADOW_CASTER : 0u);
+  if (glass) {
+    if (!castsShadow) return MASK_GLASS;
+    return MASK_GLASS |
+           (shadowsDirectionalOnly ? MASK_GLASS_SHADOW_DIRECTIONAL : MASK_GLASS_SHADOW);
+  }
+  if (!castsShadow) return MASK_VISIBLE;
+  return MASK_VISIBLE | (shadowsDirectionalOnly ? MASK_SHADOW_DIRECTIONAL : MASK_SHADOW_CASTER);
 }
 }  // namespace render::gpu

@@ -293,7 +293,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
     TlasInstance tlasInstance{&bottomLevels_[instance.mesh], instance.objectToWorld, i};
     tlasInstance.bounds = scene::transformBox(meshBounds[instance.mesh], instance.objectToWorld);
-    tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody);
+    tlasInstance.mask = gpu::instanceMask(glass, instance.castsShadow, instance.playerBody,
+                                          instance.shadowsDirectionalOnly);
     if (alphaMasked(scene, instance)) {
       // Not opaque, so the alpha test (alpha.rahit) runs for every ray that meets it.
       tlasInstance.hitGroup = HIT_GROUP_SURFACE;

@@ -97,6 +97,9 @@ struct InstanceDesc {
   uint32_t material = 0;
   glm::mat4 objectToWorld{1.0f};
   bool castsShadow = true;
+  // With castsShadow: it blocks only the shadow rays towards directional lights (a roof or dome
+  // that keeps the sun out of an interior whose own lamps cannot reach past it).
+  bool shadowsDirectionalOnly = false;
   // The player's figure: casts shadows and shows in mirrors, but camera rays from the eye and
   // the player's own exposure probes pass through it.
   bool playerBody = false;

@@ -71,6 +71,8 @@ vec3 routeTransmittance(uint route, vec3 origin, vec3 direction, float distance)
   vec3 directions[MAX_ROUTE_MIRRORS + 1];
   float lengths[MAX_ROUTE_MIRRORS + 1];
   uint count = routes[route].lightMirrors.y;
+  // A directional light's image in a flat mirror is directional too.
+  bool directional = isDirectional(routes[route].image);
   // Geometry first, which rejects most points without tracing anything.
   for (uint i = 0u; i < count; ++i) {
     float t;
@@ -90,7 +92,7 @@ vec3 routeTransmittance(uint route, vec3 origin, vec3 direction, float distance)
   lengths[count] = distance;
   vec3 transmittance = vec3(1.0);
   for (uint i = 0u; i <= count; ++i) {
-    transmittance *= shadowTransmittance(starts[i], directions[i], lengths[i]);
+    transmittance *= shadowTransmittance(starts[i], directions[i], lengths[i], directional);
     if (all(equal(transmittance, vec3(0.0)))) break;
   }
   return transmittance;

@@ -33,16 +33,29 @@ vec3 glassTransmittance(vec3 origin, vec3 direction, float tMax, uint mask) {
 #endif
 }
 
+// Shadow rays towards a directional light also meet the casters of directional shadows alone
+// ("casts_shadow": "directional": a roof or dome that keeps the sun out of an interior); the
+// rays towards the lamps inside need not test them.
+bool isDirectional(GpuLight light) { return uint(light.positionType.w) == LIGHT_DIRECTIONAL; }
+
+uint shadowRayMask(bool directional) {
+  return shadowCasterMask | (directional ? MASK_SHADOW_DIRECTIONAL : 0u);
+}
+
+uint glassShadowRayMask(bool directional) {
+  return MASK_GLASS_SHADOW | (directional ? MASK_GLASS_SHADOW_DIRECTIONAL : 0u);
+}
+
 // How much of a light gets from `origin` along `toLight`: 0 behind an opaque caster, else the
-// transmittance of the glass in between.
-vec3 shadowTransmittance(vec3 origin, vec3 toLight, float distanceToLight) {
+// transmittance of the glass in between. `directional`: the light is (isDirectional).
+vec3 shadowTransmittance(vec3 origin, vec3 toLight, float distanceToLight, bool directional) {
   visibility = 0.0;
   traceRayEXT(sceneTlas,
               SURFACE_RAY_FLAGS | gl_RayFlagsTerminateOnFirstHitEXT |
                   gl_RayFlagsSkipClosestHitShaderEXT,
-              shadowCasterMask, 0, 1, MISS_SHADOW, origin, 0.0, toLight, distanceToLight,
-              PAYLOAD_SHADOW);
+              shadowRayMask(directional), 0, 1, MISS_SHADOW, origin, 0.0, toLight,
+              distanceToLight, PAYLOAD_SHADOW);
   ++raysTraced;
   if (visibility == 0.0) return vec3(0.0);
-  return glassTransmittance(origin, toLight, distanceToLight, MASK_GLASS_SHADOW);
+  return glassTransmittance(origin, toLight, distanceToLight, glassShadowRayMask(directional));
 }

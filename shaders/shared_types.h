@@ -94,6 +94,10 @@ using uint = uint32_t;
 // The player's body: seen by shadow rays and by rays that left a mirror, not by camera rays from
 // the eye, nor by the probe rays that measure the player's own exposure.
 #define MASK_BODY 0x10u
+// Casters of shadows from directional lights only ("casts_shadow": "directional"), opaque and
+// glass: only the shadow rays towards a directional light test them.
+#define MASK_SHADOW_DIRECTIONAL 0x20u
+#define MASK_GLASS_SHADOW_DIRECTIONAL 0x40u
 
 // Hit groups (the instance's SBT record offset).
 #define HIT_GROUP_SURFACE 0u

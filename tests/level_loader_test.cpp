@@ -767,6 +767,25 @@ TEST(LevelErrors, truncated_file_is_a_syntax_error_at_its_end) {
             "unexpected end of input; expected string literal");
 }
 
+TEST(LevelLoader, casts_shadow_directional_keeps_a_caster_of_directional_light_alone) {
+  const std::string text = replaced(kMinimalLevel, R"({"mesh": "cube", "material": "grey"})",
+                                    R"({"mesh": "cube", "material": "grey",
+                                        "casts_shadow": "directional"})");
+  const game::Level level = game::parseLevel(text, "levels/test.json");
+  EXPECT_TRUE(level.entities[0].castsShadow);
+  EXPECT_TRUE(level.entities[0].shadowsDirectionalOnly);
+  const scene::SceneDesc scene = game::buildSceneDesc(level);
+  EXPECT_TRUE(scene.instances[0].castsShadow);
+  EXPECT_TRUE(scene.instances[0].shadowsDirectionalOnly);
+  // A default entity casts every shadow; any other string is refused with the choices.
+  const game::Level plain = game::parseLevel(kMinimalLevel, "levels/test.json");
+  EXPECT_FALSE(plain.entities[0].shadowsDirectionalOnly);
+  EXPECT_EQ(parseError(replaced(kMinimalLevel, R"({"mesh": "cube", "material": "grey"})",
+                                R"({"mesh": "cube", "material": "grey", "casts_shadow": "sun"})")),
+            "levels/test.json:7:78: /entities/crate/casts_shadow: expected true, false or "
+            "\"directional\", got \"sun\"");
+}
+
 TEST(LevelErrors, unknown_key_suggests_the_nearest_allowed_key) {
   auto entityError = [](const std::string& entity) {
     return parseError(replaced(kMinimalLevel, R"({"mesh": "cube", "material": "grey"})", entity));
@@ -979,9 +998,11 @@ TEST(LevelErrors, scale_light_and_entity_values_are_checked) {
                 .find("/entities/crate/scale: expected a number > 0 or an array of 3 numbers > 0, "
                       "got \"big\""),
             std::string::npos);
-  EXPECT_NE(entityError(R"("casts_shadow": "no")")
-                .find("/entities/crate/casts_shadow: expected true or false, got \"no\""),
-            std::string::npos);
+  EXPECT_NE(
+      entityError(R"("casts_shadow": "no")")
+          .find(
+              "/entities/crate/casts_shadow: expected true, false or \"directional\", got \"no\""),
+      std::string::npos);
   EXPECT_NE(entityError(R"("mover": {"keyframes": [{}, {}]}, "interactable": {"type": "slide"})")
                 .find("/entities/crate: an entity is a mover or interactable, not both"),
             std::string::npos);

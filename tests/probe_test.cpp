@@ -7,6 +7,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "game/primitives.hpp"
+#include "render/gpu_types.hpp"
 #include "render/vulkan_error.hpp"
 #include "scene/probes.hpp"
 #include "scene_builder.hpp"
@@ -228,6 +229,70 @@ TEST_F(ProbeTest, exposure_probes_need_a_scene_that_asks_for_them) {
   options.height = 8;
   render::Renderer renderer(context(), compiler(), scene, options);
   EXPECT_THROW(renderer.setProbes({{}, {sensorGrid(0)}}), render::RenderError);
+}
+
+// "casts_shadow": "directional": a roof 1 m up blocks (or, as glass, tints) the sun but is not
+// tested by the shadow rays towards a lamp, here one above it at y = 3 (in a level the lamps are
+// inside the shell, where that changes nothing). The probes and the picture agree.
+enum class Roof { None, Casts, DirectionalOnly, DirectionalOnlyGlass };
+
+scene::SceneDesc roofScene(const scene::LightDesc& light, Roof roof) {
+  scene::SceneDesc scene = sensorScene(light, false, false);
+  SceneBuilder builder{scene};
+  if (roof != Roof::None) {
+    const MaterialDesc material =
+        roof == Roof::DirectionalOnlyGlass ? glassMaterial({0.5f, 0.5f, 0.5f}) : grey();
+    builder.instance(builder.mesh(game::primitives::box({4, 0.02f, 4})), builder.material(material),
+                     at({0, 1.0f, 0}));
+    builder.scene.instances.back().shadowsDirectionalOnly = roof != Roof::Casts;
+  }
+  return builder.scene;
+}
+
+scene::LightDesc sunAbove() {
+  scene::LightDesc light;
+  light.type = scene::LightType::Directional;
+  light.direction = {0, -1, 0};
+  light.intensity = 3.0f;
+  return light;
+}
+
+TEST_F(ProbeTest, a_caster_of_directional_shadows_alone_blocks_the_sun_and_not_the_lamps) {
+  EXPECT_EQ(render::gpu::instanceMask(false, true, false, true),
+            MASK_VISIBLE | MASK_SHADOW_DIRECTIONAL);
+  EXPECT_EQ(render::gpu::instanceMask(true, true, false, true),
+            MASK_GLASS | MASK_GLASS_SHADOW_DIRECTIONAL);
+  constexpr uint32_t kAll = 64u * scene::ProbeCounts::exposureOne;
+  auto exposure = [&](const scene::LightDesc& light, Roof roof) {
+    return measure(roofScene(light, roof), {{}, {sensorGrid(0)}}, 8, 8).exposureFixed[0];
+  };
+  EXPECT_EQ(exposure(sunAbove(), Roof::None), kAll);
+  EXPECT_EQ(exposure(sunAbove(), Roof::DirectionalOnly), 0u);
+  EXPECT_EQ(exposure(sunAbove(), Roof::DirectionalOnlyGlass), kAll / 2);
+  EXPECT_EQ(exposure(pointLightAbove(), Roof::Casts), 0u);
+  EXPECT_EQ(exposure(pointLightAbove(), Roof::DirectionalOnly), kAll);
+  EXPECT_EQ(exposure(pointLightAbove(), Roof::DirectionalOnlyGlass), kAll);
+
+  // The linear radiance at the centre of a view straight down from 0.5 m, under the roof.
+  auto floorUnderRoof = [](const scene::SceneDesc& scene) {
+    render::RendererOptions options;
+    options.width = 8;
+    options.height = 8;
+    render::Renderer renderer(context(), compiler(), scene, options);
+    scene::FrameDesc frame;
+    frame.camera.position = {0.0f, 0.5f, 0.0f};
+    frame.camera.pitchDegrees = -90.0f;
+    renderer.renderFrame(frame, false);
+    return renderer.readRadiance()[4 * 8 + 4];
+  };
+
+  // The picture: the sun as under a roof that casts every shadow, the lamp as under none.
+  EXPECT_EQ(floorUnderRoof(roofScene(sunAbove(), Roof::DirectionalOnly)),
+            floorUnderRoof(roofScene(sunAbove(), Roof::Casts)));
+  EXPECT_LT(floorUnderRoof(roofScene(sunAbove(), Roof::DirectionalOnly)).g,
+            floorUnderRoof(roofScene(sunAbove(), Roof::None)).g);
+  EXPECT_EQ(floorUnderRoof(roofScene(pointLightAbove(), Roof::DirectionalOnly)),
+            floorUnderRoof(roofScene(pointLightAbove(), Roof::None)));
 }
 
 }  // namespace

@@ -206,7 +206,14 @@ Entity readEntity(LevelReader& reader, const std::string& id, const OrderedJson&
       reader.expected(scale, scalePointer, "a number > 0 or an array of 3 numbers > 0");
     }
   }
-  result.castsShadow = reader.readOptionalBool(entity, "casts_shadow", pointer, true);
+  if (entity.contains("casts_shadow") && entity["casts_shadow"] == "directional") {
+    result.shadowsDirectionalOnly = true;  // still a caster, for directional lights
+  } else if (entity.contains("casts_shadow") && !entity["casts_shadow"].is_boolean()) {
+    reader.expected(entity["casts_shadow"], childPointer(pointer, "casts_shadow"),
+                    "true, false or \"directional\"");
+  } else {
+    result.castsShadow = reader.readOptionalBool(entity, "casts_shadow", pointer, true);
+  }
   if (entity.contains("mover") && entity.contains("interactable")) {
     reader.failKey(pointer, "interactable",
                    "an entity is a mover or interactable, not both; remove \"mover\" or "
