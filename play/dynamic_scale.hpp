@@ -27,8 +27,8 @@ class DynamicScale {
   // The full render size; the scale starts at 1.
   DynamicScale(uint32_t renderWidth, uint32_t renderHeight);
 
-  // One shown frame's time (milliseconds, the whole loop). Returns true when the picture size
-  // changed.
+  // One shown frame's time (milliseconds, the whole loop less the wait for the display that
+  // vsync adds). Returns true when the picture size changed.
   bool frameFinished(double milliseconds);
 
   float scale() const { return scale_; }

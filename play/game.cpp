@@ -69,7 +69,8 @@ int Game::run(const fs::path& firstLevel) {
     frameMilliseconds.push_back(elapsed * 1000.0);
     bool quitting = false;
     if (!paused_) {
-      adjustPictureSize(elapsed);
+      // The frame's work: vsync's wait for the display is not something fewer pixels shorten.
+      adjustPictureSize(std::max(elapsed - presenter_.lastDisplayWaitMilliseconds() / 1000.0, 0.0));
       gatherMouseLook(window_, look_, settings_);
       parts.start(FramePart::Ticks);
       runTicks(elapsed);

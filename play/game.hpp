@@ -41,8 +41,9 @@ class Game {
   void setPaused(bool paused);
   void handlePresses();
   void runTicks(double elapsed);
-  // The dynamic render scale after a played frame of `frameSeconds`: it follows the settings
-  // (on unless --fixed-scale, --size or the menu says otherwise) and sets the next picture size.
+  // The dynamic render scale after a played frame of `frameSeconds` of work: it follows the
+  // settings (on unless --fixed-scale, --size or the menu says otherwise) and sets the next picture
+  // size.
   void adjustPictureSize(double frameSeconds);
   // The dynamic render scale over the frames played, for --quit-after-ticks's report.
   void reportPictureScales() const;

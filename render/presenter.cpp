@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -427,9 +428,15 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   const VkDevice device = context_.device();
   collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
   vkCheck(vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  using Clock = std::chrono::steady_clock;
+  auto millisecondsSince = [](Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
   uint32_t imageIndex = 0;
+  const Clock::time_point acquireStarted = Clock::now();
   const VkResult acquired = vkAcquireNextImageKHR(device, swapchain_, UINT64_MAX, imageAcquired_,
                                                   VK_NULL_HANDLE, &imageIndex);
+  displayWaitMilliseconds_ = millisecondsSince(acquireStarted);
   if (acquired == VK_ERROR_OUT_OF_DATE_KHR) {
     swapchainStale_ = true;  // the semaphore was not signalled; try again next frame
     return false;
@@ -463,7 +470,9 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   presentInfo.swapchainCount = 1;
   presentInfo.pSwapchains = &swapchain_;
   presentInfo.pImageIndices = &imageIndex;
+  const Clock::time_point presentStarted = Clock::now();
   const VkResult presented = vkQueuePresentKHR(context_.queue(), &presentInfo);
+  if (!context_.isCpuDevice()) displayWaitMilliseconds_ += millisecondsSince(presentStarted);
   if (presented == VK_ERROR_OUT_OF_DATE_KHR || presented == VK_SUBOPTIMAL_KHR ||
       acquired == VK_SUBOPTIMAL_KHR) {
     swapchainStale_ = true;

@@ -56,6 +56,10 @@ class Presenter {
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
   bool present(const Renderer& renderer, std::span<const HudRect> hud = {},
                const OverlayDraw& overlay = {});
+  // How long the last present() waited for the display rather than worked (milliseconds): the
+  // wait for a swapchain image, and on a GPU the present call itself, where vsync holds a frame
+  // back. On a CPU driver the present call copies the picture to the window: that is work.
+  double lastDisplayWaitMilliseconds() const { return displayWaitMilliseconds_; }
 
   // The next present that shows something also copies the window's image (the picture, the
   // HUD and the overlay) for takeCapture(). Throws RenderError when the surface's images
@@ -100,7 +104,8 @@ class Presenter {
   const Context& context_;
   GLFWwindow* window_;
   bool vsync_;
-  bool swapchainStale_ = false;  // resized, out of date, or vsync changed
+  double displayWaitMilliseconds_ = 0.0;  // lastDisplayWaitMilliseconds
+  bool swapchainStale_ = false;           // resized, out of date, or vsync changed
   VkSurfaceKHR surface_ = VK_NULL_HANDLE;
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
