@@ -40,11 +40,9 @@ bool insidePreviousImage(ivec2 pixel) {
          all(lessThan(pixel, ivec2(frame.previousSize.xy)));
 }
 
-// The raw visibility estimate (rgb), with anything non-finite replaced so it never spreads,
+// The raw visibility estimate (rgb; ray-gen writes it finite, in [0, 1]: writeDenoiserInputs)
 // and the width of the penumbra there in pixels (a; below 0 where no sample met a caster).
 vec4 rawSample(ivec2 pixel) {
   vec4 value = imageLoad(visibilityRawImage, pixel);
-  vec3 visibility = isFinite(value.rgb) ? clamp(value.rgb, 0.0, 1.0) : vec3(1.0);
-  float penumbra = isnan(value.a) ? -1.0 : value.a;
-  return vec4(visibility, penumbra);
+  return vec4(value.rgb, isnan(value.a) ? -1.0 : value.a);
 }
