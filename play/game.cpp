@@ -320,7 +320,7 @@ void Game::adjustPictureSize(double frameSeconds) {
     const PictureSize size = dynamicScale_->size();
     renderer.setPictureSize(size.width, size.height);
   }
-  pictureScales_.push_back(dynamicScale_->scale());
+  if (options_.quitAfterTicks != 0) pictureScales_.push_back(dynamicScale_->scale());
 }
 
 void Game::reportPictureScales() const {

@@ -84,7 +84,7 @@ class Game {
   uint64_t ticksPlayed_ = 0;                     // over all levels, for --quit-after-ticks
   uint64_t framesShown_ = 0;
   std::optional<DynamicScale> dynamicScale_;  // none: the picture is the whole render size
-  std::vector<float> pictureScales_;          // each played frame's, for the report at the end
+  std::vector<float> pictureScales_;  // each played frame's, for --quit-after-ticks's report
   double fps_ = 0.0;
   bool screenshotRequested_ = false;
   bool captureFailed_ = false;
