@@ -10,6 +10,7 @@
 #include "game/author_view.hpp"
 #include "play/level_flow.hpp"
 #include "play/level_list.hpp"
+#include "render/renderer.hpp"
 #include "sim/simulation.hpp"
 
 namespace play {
@@ -56,8 +57,11 @@ void drawAuthorOverlay(const PlayedLevel& played) {
                                  ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav |
                                  ImGuiWindowFlags_NoInputs;
   if (ImGui::Begin("Probe values (F3)", nullptr, flags)) {
-    ImGui::Text("tick %llu, %ux%u", static_cast<unsigned long long>(simulation.tick()),
-                played.renderWidth, played.renderHeight);
+    // Probes at the render size; the picture at the dynamic render scale's part of it.
+    const render::Renderer& renderer = simulation.renderer();
+    ImGui::Text("tick %llu, probes %ux%u, picture %ux%u",
+                static_cast<unsigned long long>(simulation.tick()), played.renderWidth,
+                played.renderHeight, renderer.pictureWidth(), renderer.pictureHeight());
     // What the crosshair is on, for placing things and naming them in rules.
     if (const auto target = game::crosshairTarget(simulation.world())) {
       for (const std::string& line :
