@@ -178,11 +178,16 @@ TEST_F(PictureSizeTest, temporal_upscaling_keeps_its_history_while_the_picture_s
 }
 
 // What the rules read comes from probe frames at the whole render size, whatever size the
-// pictures between them had.
+// pictures between them had (upscaled temporally, as play does, or not).
 TEST_F(PictureSizeTest, probe_readings_do_not_depend_on_the_picture_size) {
   const game::Level level = game::loadLevel(test::sourceDir() / "levels" / "01_first_light.json");
-  auto run = [&](bool changeSizes) {
-    sim::Simulation simulation(context(), compiler(), level, {32, 18, 2, 1});
+  auto run = [&](bool changeSizes, bool upscale) {
+    sim::SimulationOptions options{32, 18, 2, 1};
+    if (upscale) {
+      options.outputWidth = 64;
+      options.outputHeight = 36;
+    }
+    sim::Simulation simulation(context(), compiler(), level, options);
     std::vector<float> trace;
     for (uint32_t step = 0; step < 40; ++step) {
       game::TickInput input;
@@ -197,12 +202,13 @@ TEST_F(PictureSizeTest, probe_readings_do_not_depend_on_the_picture_size) {
     }
     return trace;
   };
-  const std::vector<float> whole = run(false);
+  const std::vector<float> whole = run(false, false);
   ASSERT_FALSE(whole.empty());
   float highest = 0.0f;
   for (float coverage : whole) highest = std::max(highest, coverage);
   EXPECT_GT(highest, 0.0f);  // the orb is in view: the comparison below compares something
-  EXPECT_EQ(run(true), whole);
+  EXPECT_EQ(run(true, false), whole);
+  EXPECT_EQ(run(true, true), whole);
 }
 
 }  // namespace
