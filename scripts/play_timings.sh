@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Plays every shipped level (or the given ones) for 600 ticks in a 1280x720 window under Xvfb
-# and prints play's frame rate, percentiles and per-part medians, and bench's frame rate for
-# the same render size, one level after the other (docs/PERFORMANCE.md).
+# and prints play's frame rate, percentiles, per-part medians and means and the dynamic render
+# scale's range (PLAY_OPTIONS=--fixed-scale keeps the scale), and bench's frame rate for the same
+# render size, one level after the other (docs/PERFORMANCE.md).
 # Usage: bash scripts/play_timings.sh [--binary PATH] [--capture-dir DIR] [-- play options]
 set -euo pipefail
 cd "$(dirname "$0")/.."
