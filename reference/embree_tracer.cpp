@@ -338,14 +338,12 @@ class PixelTracer {
                    bool directional) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRay ray = makeRay(origin, toLight, distance,
-                         MASK_SHADOW_CASTER | (directional ? MASK_SHADOW_DIRECTIONAL : 0u));
+    RTCRay ray = makeRay(origin, toLight, distance, render::gpu::shadowRayMask(directional));
     rtcOccluded1(top_, &context, &ray);
     ++counts.secondary;
     const bool blocked = !(ray.tfar >= 0.0f);  // Embree sets tfar to -inf on a hit
     if (!blocked && features_.glass)
-      traceGlass(origin, toLight, distance,
-                 MASK_GLASS_SHADOW | (directional ? MASK_GLASS_SHADOW_DIRECTIONAL : 0u));
+      traceGlass(origin, toLight, distance, render::gpu::glassShadowRayMask(directional));
   }
 
   // shadeSurface: hard lights one ray each; soft lights share the variant's samples.

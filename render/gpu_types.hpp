@@ -39,4 +39,13 @@ inline constexpr uint32_t instanceMask(bool glass, bool castsShadow, bool player
   if (!castsShadow) return MASK_VISIBLE;
   return MASK_VISIBLE | (shadowsDirectionalOnly ? MASK_SHADOW_DIRECTIONAL : MASK_SHADOW_CASTER);
 }
+
+// The masks of a shadow ray and of the glass ray that follows it (shadow_rays.glsl has the same):
+// towards a directional light they also meet the casters of directional shadows alone.
+inline constexpr uint32_t shadowRayMask(bool directional) {
+  return MASK_SHADOW_CASTER | (directional ? MASK_SHADOW_DIRECTIONAL : 0u);
+}
+inline constexpr uint32_t glassShadowRayMask(bool directional) {
+  return MASK_GLASS_SHADOW | (directional ? MASK_GLASS_SHADOW_DIRECTIONAL : 0u);
+}
 }  // namespace render::gpu
