@@ -100,8 +100,10 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   visibilityRaw_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "raw visibility");
   // On GPUs the passes are limited by memory traffic, so what tolerates fewer bits has them
   // (docs/PERFORMANCE.md, session 12). The motion (an offset of a few pixels in half floats and
-  // a distance) and the surface (a normal in two 16-bit numbers and a distance) take 8 bytes;
-  // the distances stay full floats, since half floats end at 65504 and a level may be large.
+  // a distance) takes 8 bytes, as does the surface (a normal in two 16-bit numbers and a
+  // distance); the distances stay full floats, since half floats end at 65504 and a level may be
+  // large. The surface's image also holds its instance, so that one read gives both: on lavapipe
+  // each image read costs alike whatever its size (docs/PERFORMANCE.md, session 19).
   // The moments steer the filter: half floats. The history (the estimate, and its length in
   // alpha) keeps full floats: a running average in half floats moves in steps of 1/2048 near 1
   // (07's error after 32 frames 9 % worse), and a reference accumulation counts past half
@@ -111,8 +113,7 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   filterB_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter pong");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
-    surface_[parity] = make(VK_FORMAT_R32G32_UINT, ("surface" + suffix).c_str());
-    instance_[parity] = make(VK_FORMAT_R32_UINT, ("instance" + suffix).c_str());
+    surface_[parity] = make(VK_FORMAT_R32G32B32A32_UINT, ("surface" + suffix).c_str());
     history_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("history" + suffix).c_str());
     moments_[parity] = make(VK_FORMAT_R16G16B16A16_SFLOAT, ("moments" + suffix).c_str());
   }
@@ -144,8 +145,6 @@ std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity
       {BINDING_VISIBILITY_RAW, visibilityRaw_->view()},
       {BINDING_SURFACE, surface_[current]->view()},
       {BINDING_SURFACE_PREVIOUS, surface_[previous]->view()},
-      {BINDING_INSTANCE, instance_[current]->view()},
-      {BINDING_INSTANCE_PREVIOUS, instance_[previous]->view()},
       {BINDING_MOTION, motion_->view()},
       {BINDING_HISTORY, history_[previous]->view()},
       {BINDING_HISTORY_NEXT, history_[current]->view()},

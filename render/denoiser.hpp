@@ -76,7 +76,7 @@ class Denoiser {
   std::unique_ptr<StorageImage> filterTiles_;
   Buffer filterTileList_;
   uint32_t tileStamp_ = 0;  // the images start at 0; the first frame stamps 1
-  std::array<std::unique_ptr<StorageImage>, 2> surface_, instance_, history_, moments_;
+  std::array<std::unique_ptr<StorageImage>, 2> surface_, history_, moments_;
   VkPipeline temporal_ = VK_NULL_HANDLE;
   VkPipeline atrous_ = VK_NULL_HANDLE;
 };

@@ -41,8 +41,9 @@ void main() {
   uint instance = 0u;
   vec4 moments = vec4(0.0);
   if (centre.a > 0.0) {
-    surface = unpackSurface(imageLoad(surfaceImage, pixel).xy);
-    instance = imageLoad(instanceImage, pixel).x;
+    uvec4 packedSurface = imageLoad(surfaceImage, pixel);
+    surface = unpackSurface(packedSurface.xy);
+    instance = packedSurface.z;
     moments = imageLoad(momentsNextImage, pixel);
   }
   // No blur wider than the penumbra where its width is known (w, pixels): a nearly hard
@@ -65,8 +66,9 @@ void main() {
         if (dx == 0 && dy == 0) continue;
         ivec2 tap = pixel + ivec2(dx, dy) * pass.stepSize;
         if (!insideImage(tap)) continue;
-        if (imageLoad(instanceImage, tap).x != instance) continue;
-        vec4 tapSurface = unpackSurface(imageLoad(surfaceImage, tap).xy);
+        uvec4 packedTap = imageLoad(surfaceImage, tap);
+        if (packedTap.z != instance) continue;
+        vec4 tapSurface = unpackSurface(packedTap.xy);
         vec4 value = loadFiltered(tap);
         float weight = kernel[dx + 1] * kernel[dy + 1] *
                        exp(-abs(tapSurface.w - surface.w) / depthScale) *

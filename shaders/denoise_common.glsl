@@ -2,7 +2,12 @@
 #ifndef DENOISER_GROUP_SIZE  // the renderer defines it (Denoiser::kGpuGroupSize, kCpuGroupSize)
 #define DENOISER_GROUP_SIZE 16
 #endif
-layout(local_size_x = DENOISER_GROUP_SIZE, local_size_y = DENOISER_GROUP_SIZE) in;
+// A work-group covers DENOISER_GROUP_SIZE x DENOISER_GROUP_SIZE pixels (a tile of the a-trous
+// iterations' list); the temporal pass may give each invocation several pixels of a column.
+#ifndef DENOISER_GROUP_ROWS
+#define DENOISER_GROUP_ROWS DENOISER_GROUP_SIZE
+#endif
+layout(local_size_x = DENOISER_GROUP_SIZE, local_size_y = DENOISER_GROUP_ROWS) in;
 
 // Push constants of the passes (render::DenoiserPass).
 layout(push_constant) uniform Pass {

@@ -4,12 +4,24 @@
 #include "shared_types.h"
 #define DENOISER_BINDINGS
 #include "frame_bindings.glsl"
+#ifndef NEIGHBOURHOOD_TILE  // the renderer defines it: 1 on GPUs, 0 on CPU drivers
+#define NEIGHBOURHOOD_TILE 0
+#endif
+// Without the tile (CPU drivers) an invocation handles this many pixels of a column (below).
+#ifndef COLUMN_PIXELS
+#define COLUMN_PIXELS 2
+#endif
+#if NEIGHBOURHOOD_TILE
+#define DENOISER_GROUP_ROWS DENOISER_GROUP_SIZE
+#else
+#define DENOISER_GROUP_ROWS (DENOISER_GROUP_SIZE / COLUMN_PIXELS)
+#endif
 #include "denoise_common.glsl"
 
 // Temporal pass: reproject last frame's history, reject it where the surface changed (depth,
 // normal, instance), clamp it to the range of this frame's 5x5 neighbourhood (below), and blend
 // in this frame's sample; also keeps luminance moments for the variance the spatial filter
-// steers by.
+// steers by. A pixel of sky is only passed through (keepWithoutSurface).
 // In reference mode it is a plain running average with no clamping and no cap.
 
 const float MAX_HISTORY_LENGTH = float(DENOISER_MAX_HISTORY);
@@ -22,17 +34,46 @@ const int NEIGHBOURHOOD_RADIUS = 2;
 const float CLAMP_MARGIN = 0.1;
 
 const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
-const float MOTION_GRID = 256.0;    // the reprojection rounds to 1/256 pixel
+const float MOTION_GRID = 256.0;   // the reprojection rounds to 1/256 pixel
 
-#ifndef NEIGHBOURHOOD_TILE  // the renderer defines it: 1 on GPUs, 0 on CPU drivers
-#define NEIGHBOURHOOD_TILE 0
-#endif
+// The statistics of a pixel's neighbourhood the clamp and the moments need. They are summed row
+// by row, then the rows in order, the same way on both paths below, so both give the same bits.
+struct Neighbourhood {
+  vec3 sum, sumSquares, low, high;
+  float count;
+  // The penumbra's width here: the mean over the neighbourhood's samples that met a caster
+  // (a sample that reached the light says nothing of it).
+  float penumbraSum, penumbraSamples;
+};
+
+Neighbourhood emptyNeighbourhood() {
+  return Neighbourhood(vec3(0.0), vec3(0.0), vec3(1.0), vec3(0.0), 0.0, 0.0, 0.0);
+}
+
+void addSample(inout Neighbourhood n, vec4 sampled) {
+  if (sampled.x == OUTSIDE_IMAGE) return;
+  if (sampled.a >= 0.0) {
+    n.penumbraSum += sampled.a;
+    n.penumbraSamples += 1.0;
+  }
+  n.sum += sampled.rgb;
+  n.sumSquares += sampled.rgb * sampled.rgb;
+  n.low = min(n.low, sampled.rgb);
+  n.high = max(n.high, sampled.rgb);
+  n.count += 1.0;
+}
+
+Neighbourhood merged(Neighbourhood a, Neighbourhood b) {
+  return Neighbourhood(a.sum + b.sum, a.sumSquares + b.sumSquares, min(a.low, b.low),
+                       max(a.high, b.high), a.count + b.count, a.penumbraSum + b.penumbraSum,
+                       a.penumbraSamples + b.penumbraSamples);
+}
 
 #if NEIGHBOURHOOD_TILE
 // The work-group's raw samples and the margin its neighbourhoods reach, loaded once into
 // shared memory: each sample is read by 25 pixels (on the H100 at 3840x2160 the 5x5 image
 // reads were a third of the denoiser's time). On lavapipe the work-group barrier costs more
-// than the reads it saves, so the CPU build reads each neighbour from the image.
+// than the reads it saves, so the CPU build slides each neighbourhood down a column instead.
 const ivec2 TILE_SIZE = ivec2(gl_WorkGroupSize.xy) + 2 * NEIGHBOURHOOD_RADIUS;
 const int TILE_SAMPLES = TILE_SIZE.x * TILE_SIZE.y;
 shared vec4 tileSamples[TILE_SAMPLES];
@@ -50,60 +91,65 @@ vec4 neighbourSample(ivec2 offset) {
   ivec2 at = ivec2(gl_LocalInvocationID.xy) + NEIGHBOURHOOD_RADIUS + offset;
   return tileSamples[at.y * TILE_SIZE.x + at.x];
 }
-#else
-// Whether the pixel's whole neighbourhood is inside the picture (most pixels): then its reads
-// skip the test (on lavapipe the 25 neighbour reads are half of the denoiser's time).
-bool neighbourhoodInside = false;
 
-vec4 neighbourSample(ivec2 offset) {
-  ivec2 at = ivec2(gl_GlobalInvocationID.xy) + offset;
-  if (neighbourhoodInside) return rawSample(at);
-  return insideImage(at) ? rawSample(at) : vec4(OUTSIDE_IMAGE);
+Neighbourhood pixelNeighbourhood() {
+  Neighbourhood n = emptyNeighbourhood();
+  for (int dy = -NEIGHBOURHOOD_RADIUS; dy <= NEIGHBOURHOOD_RADIUS; ++dy) {
+    Neighbourhood row = emptyNeighbourhood();
+    for (int dx = -NEIGHBOURHOOD_RADIUS; dx <= NEIGHBOURHOOD_RADIUS; ++dx)
+      addSample(row, neighbourSample(ivec2(dx, dy)));
+    n = merged(n, row);
+  }
+  return n;
+}
+#else
+// One invocation handles COLUMN_PIXELS pixels one above the other: each row of samples their
+// neighbourhoods share is read and summed once (on lavapipe the neighbourhoods' image reads
+// were half of the denoiser's time, 25 a pixel; here 6 rows of 5 for 2 pixels). With 4 pixels
+// a column lavapipe was slower again (docs/PERFORMANCE.md, session 19).
+const int ROWS = COLUMN_PIXELS + 2 * NEIGHBOURHOOD_RADIUS;
+
+// `inside`: the whole column's neighbourhood is inside the picture (most columns).
+Neighbourhood rowNeighbourhood(ivec2 centre, bool inside) {
+  Neighbourhood row = emptyNeighbourhood();
+  for (int dx = -NEIGHBOURHOOD_RADIUS; dx <= NEIGHBOURHOOD_RADIUS; ++dx) {
+    ivec2 at = centre + ivec2(dx, 0);
+    // Read from a position clamped into the picture and dropped outside it: on lavapipe a read
+    // without a condition costs less than one under it.
+    vec4 sampled = rawSample(clamp(at, ivec2(0), ivec2(frame.sizeFrameLights.xy) - 1));
+    addSample(row, inside || insideImage(at) ? sampled : vec4(OUTSIDE_IMAGE));
+  }
+  return row;
 }
 #endif
 
-void main() {
-#if NEIGHBOURHOOD_TILE
-  loadTile();
-  barrier();  // every invocation reaches it: the ones past the image's edge return after
-#endif
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (!insideImage(pixel)) return;
-#if !NEIGHBOURHOOD_TILE
-  neighbourhoodInside =
-      all(greaterThanEqual(pixel, ivec2(NEIGHBOURHOOD_RADIUS))) &&
-      all(lessThan(pixel + NEIGHBOURHOOD_RADIUS, ivec2(frame.sizeFrameLights.xy)));
-#endif
+// A pixel whose path met no surface (the sky, seen directly or in a mirror) has nothing to
+// denoise: it keeps this frame's sample, without variance, and its neighbourhood is not read
+// (on lavapipe a pixel's image reads are most of this pass; 06 Night Watch is half sky). The
+// a-trous iterations filter no such pixel and leave it out of their surface pixels' taps (its
+// instance is 0), and no later frame's history matches it, so only its variance differs from
+// integrating it as a surface: the picture is the same.
+void keepWithoutSurface(ivec2 pixel, vec3 current) {
+  vec4 filterInput = vec4(current, 0.0);
+  imageStore(filterAImage, pixel, filterInput);
+  imageStore(filterBImage, pixel, filterInput);
+  float currentLuminance = luminance(current);
+  imageStore(momentsNextImage, pixel,
+             vec4(currentLuminance, currentLuminance * currentLuminance, 1.0, -1.0));
+  imageStore(historyNextImage, pixel, vec4(current, 1.0));
+}
+
+// Integrates this frame's sample `current` at `pixel`, whose surface and instance are
+// `packedSurface` (as surfaceImage holds them), into the history, and writes the spatial filter's
+// input and the next history. Returns whether the estimate has variance.
+bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) {
   bool reset = frame.denoise.x != 0u;
   bool reference = frame.denoise.y != 0u;
-  vec3 current = neighbourSample(ivec2(0)).rgb;
-  vec4 surface = unpackSurface(imageLoad(surfaceImage, pixel).xy);
-  uint instance = imageLoad(instanceImage, pixel).x;
-
-  vec3 sum = vec3(0.0), sumSquares = vec3(0.0);
-  vec3 low = vec3(1.0), high = vec3(0.0);
-  float count = 0.0;
-  // The penumbra's width here: the mean over the neighbourhood's samples that met a caster
-  // (a sample that reached the light says nothing of it).
-  float penumbraSum = 0.0, penumbraSamples = 0.0;
-  for (int dy = -NEIGHBOURHOOD_RADIUS; dy <= NEIGHBOURHOOD_RADIUS; ++dy) {
-    for (int dx = -NEIGHBOURHOOD_RADIUS; dx <= NEIGHBOURHOOD_RADIUS; ++dx) {
-      vec4 sampled = neighbourSample(ivec2(dx, dy));
-      if (sampled.x == OUTSIDE_IMAGE) continue;
-      if (sampled.a >= 0.0) {
-        penumbraSum += sampled.a;
-        penumbraSamples += 1.0;
-      }
-      vec3 value = sampled.rgb;
-      sum += value;
-      sumSquares += value * value;
-      low = min(low, value);
-      high = max(high, value);
-      count += 1.0;
-    }
-  }
-  vec3 mean = sum / count;
-  vec3 sigma = sqrt(max(sumSquares / count - mean * mean, vec3(0.0)));
+  vec4 surface = unpackSurface(packedSurface.xy);
+  uint instance = packedSurface.z;
+  vec3 low = n.low, high = n.high;
+  vec3 mean = n.sum / n.count;
+  vec3 sigma = sqrt(max(n.sumSquares / n.count - mean * mean, vec3(0.0)));
 
   vec3 history = current;
   vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
@@ -127,10 +173,14 @@ void main() {
         if (!insidePreviousImage(tap)) continue;
         float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         if (weight <= 0.0) continue;
-        if (imageLoad(instancePreviousImage, tap).x != instance) continue;
-        if (!historyMatches(imageLoad(surfacePreviousImage, tap).xy, expectedDistance,
-                            surface.xyz))
-          continue;
+        // A tap of weight 1 is the nearest one, whose surface ray-gen has compared already
+        // (chooseSoftSamples: the motion says "nowhere" where it did not match). A still view
+        // has only such taps, and so reads no previous surface.
+        if (weight < 1.0 || reference) {
+          uvec4 previousSurface = imageLoad(surfacePreviousImage, tap);
+          if (previousSurface.z != instance) continue;
+          if (!historyMatches(previousSurface.xy, expectedDistance, surface.xyz)) continue;
+        }
         vec4 tapHistory = imageLoad(historyImage, tap);  // the estimate and its length
         vec2 tapMoments = imageLoad(momentsImage, tap).xy;
         if (!isFinite(tapHistory.rgb) || !isFinite(vec3(tapMoments, tapHistory.a)))
@@ -186,8 +236,18 @@ void main() {
   vec4 filterInput = vec4(integrated, filterVariance);
   imageStore(filterAImage, pixel, filterInput);
   if (filterVariance < UNFILTERED_VARIANCE_BOUND) imageStore(filterBImage, pixel, filterInput);
+  float penumbra = n.penumbraSamples > 0.0 ? n.penumbraSum / n.penumbraSamples : -1.0;
+  // The moments' length (half floats) serves the a-trous passes' test for a young history; the
+  // next frame counts on the history's own, in full floats.
+  imageStore(momentsNextImage, pixel, vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra));
+  imageStore(historyNextImage, pixel, vec4(integrated, historyLength));
   // NaN counts as variance: the a-trous iterations store such a pixel.
-  if (subgroupAny(filterVariance != 0.0) && subgroupElect()) {
+  return filterVariance != 0.0;
+}
+
+// Lists this work-group for the a-trous iterations if a pixel of it has variance.
+void listIfFiltered(bool hasVariance) {
+  if (subgroupAny(hasVariance) && subgroupElect()) {
     uvec2 tile = gl_WorkGroupID.xy;
     if (imageAtomicExchange(filterTilesImage, ivec2(tile), pass.tileStamp) != pass.tileStamp) {
       uint entry = atomicAdd(listedTiles, 1u);
@@ -199,10 +259,56 @@ void main() {
       atomicMax(dispatchGroups[1], entry / rowLength + 1u);
     }
   }
-  float penumbra = penumbraSamples > 0.0 ? penumbraSum / penumbraSamples : -1.0;
-  // The moments' length (half floats) serves the a-trous passes' test for a young history; the
-  // next frame counts on the history's own, in full floats.
-  imageStore(momentsNextImage, pixel,
-             vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra));
-  imageStore(historyNextImage, pixel, vec4(integrated, historyLength));
+}
+
+void main() {
+#if NEIGHBOURHOOD_TILE
+  loadTile();
+  barrier();  // every invocation reaches it: the ones past the image's edge return after
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (!insideImage(pixel)) return;
+  vec3 current = neighbourSample(ivec2(0)).rgb;
+  uvec4 packedSurface = imageLoad(surfaceImage, pixel);
+  bool hasVariance = false;
+  if (packedSurface.z == 0u) {
+    keepWithoutSurface(pixel, current);
+  } else {
+    hasVariance = integrate(pixel, current, packedSurface, pixelNeighbourhood());
+  }
+  listIfFiltered(hasVariance);
+#else
+  ivec2 top = ivec2(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y * COLUMN_PIXELS);
+  if (!insideImage(top)) return;
+  bool inside = all(greaterThanEqual(top, ivec2(NEIGHBOURHOOD_RADIUS))) &&
+                all(lessThan(top + ivec2(NEIGHBOURHOOD_RADIUS, ROWS - 1 - NEIGHBOURHOOD_RADIUS),
+                             ivec2(frame.sizeFrameLights.xy)));
+  // The column's surfaces (a pixel past the picture's bottom reads the last row's, unused).
+  uvec4 surfaces[COLUMN_PIXELS];
+  bool anySurface = false;
+  for (int i = 0; i < COLUMN_PIXELS; ++i) {
+    surfaces[i] =
+        imageLoad(surfaceImage, min(top + ivec2(0, i), ivec2(frame.sizeFrameLights.xy) - 1));
+    anySurface = anySurface || surfaces[i].z != 0u;
+  }
+  // A column of sky reads no neighbourhood (rows then stay unset and unused).
+  Neighbourhood rows[ROWS];
+  if (anySurface) {
+    for (int row = 0; row < ROWS; ++row)
+      rows[row] = rowNeighbourhood(top + ivec2(0, row - NEIGHBOURHOOD_RADIUS), inside);
+  }
+  bool hasVariance = false;
+  for (int i = 0; i < COLUMN_PIXELS; ++i) {
+    ivec2 pixel = top + ivec2(0, i);
+    if (!insideImage(pixel)) break;
+    vec3 current = rawSample(pixel).rgb;
+    if (surfaces[i].z == 0u) {
+      keepWithoutSurface(pixel, current);
+      continue;
+    }
+    Neighbourhood n = emptyNeighbourhood();
+    for (int row = i; row <= i + 2 * NEIGHBOURHOOD_RADIUS; ++row) n = merged(n, rows[row]);
+    hasVariance = integrate(pixel, current, surfaces[i], n) || hasVariance;
+  }
+  listIfFiltered(hasVariance);
+#endif
 }

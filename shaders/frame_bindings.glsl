@@ -9,10 +9,9 @@ layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUnifo
 const float HALF_FLOAT_MAX = 65504.0;
 layout(set = 0, binding = BINDING_SOFT_LIGHT, rgba32f) uniform image2D softLightImage;
 layout(set = 0, binding = BINDING_VISIBILITY_RAW, rgba16f) uniform image2D visibilityRawImage;
-layout(set = 0, binding = BINDING_SURFACE, rg32ui) uniform uimage2D surfaceImage;
-layout(set = 0, binding = BINDING_SURFACE_PREVIOUS, rg32ui) uniform uimage2D surfacePreviousImage;
-layout(set = 0, binding = BINDING_INSTANCE, r32ui) uniform uimage2D instanceImage;
-layout(set = 0, binding = BINDING_INSTANCE_PREVIOUS, r32ui) uniform uimage2D instancePreviousImage;
+// The surface (packSurface) in xy and its instance + 1 (0: sky) in z: one read for both.
+layout(set = 0, binding = BINDING_SURFACE, rgba32ui) uniform uimage2D surfaceImage;
+layout(set = 0, binding = BINDING_SURFACE_PREVIOUS, rgba32ui) uniform uimage2D surfacePreviousImage;
 layout(set = 0, binding = BINDING_MOTION, rg32ui) uniform uimage2D motionImage;
 layout(set = 0, binding = BINDING_HISTORY, rgba32f) uniform image2D historyImage;
 layout(set = 0, binding = BINDING_HISTORY_NEXT, rgba32f) uniform image2D historyNextImage;

@@ -28,10 +28,9 @@ using uint = uint32_t;
 // Soft shadows: what ray-gen writes for the denoiser, and the denoiser's own images.
 #define BINDING_SOFT_LIGHT 12      // rgba32f: unshadowed light of the sampled (soft) lights
 #define BINDING_VISIBILITY_RAW 13  // rgba16f: this frame's visibility estimate
-#define BINDING_SURFACE 14         // rgba32f: world normal, distance from the camera (< 0: sky)
+// rgba32ui: packed world normal, distance from the camera (< 0: sky), instance + 1 (0: sky)
+#define BINDING_SURFACE 14
 #define BINDING_SURFACE_PREVIOUS 15
-#define BINDING_INSTANCE 16  // r32ui: instance + 1 (0: sky)
-#define BINDING_INSTANCE_PREVIOUS 17
 #define BINDING_MOTION 18        // rgba32f: previous pixel position xy, expected distance z
 #define BINDING_HISTORY 19       // rgba32f: rgb visibility history (previous frame)
 #define BINDING_MOMENTS 20       // rgba32f: luminance moments x, y; history length z (prev.)
