@@ -516,6 +516,27 @@ TEST_F(SoftShadowTest, the_shared_memory_tile_and_per_pixel_reads_denoise_alike)
   EXPECT_GT(penumbra, 20u);  // the comparison covers filtered pixels, not only uniform ones
 }
 
+TEST_F(SoftShadowTest, a_still_view_keeps_its_whole_history_while_the_picture_is_upscaled) {
+  // Temporal upscaling moves the camera rays within their pixels every frame. A still view's
+  // sample continues the history of the pixel it falls in, which grows to its cap as it does
+  // without upscaling. (Reprojected by the rays' offset, the history was resampled between
+  // pixels every frame: blurred, and cut to a few frames by the cap on that blur.)
+  render::RendererOptions options;
+  options.width = kSize;
+  options.height = kSize;
+  options.outputWidth = 2 * kSize;
+  options.outputHeight = 2 * kSize;
+  render::Renderer renderer(context(), compiler(), slabScene(sphereLight(0.4f)), options);
+  for (uint32_t frame = 0; frame < 40; ++frame) renderer.renderFrame(frameAt(frame));
+  const auto moments = renderer.readDenoiser(DenoiserImage::Moments);
+  ASSERT_EQ(moments.size(), size_t(kSize * kSize));
+  size_t whole = 0;
+  for (const glm::vec4& texel : moments) whole += texel.z == float(DENOISER_MAX_HISTORY);
+  // All but the slab's outline (its pixels see the slab with some offsets and the floor with
+  // others, and start afresh at each change): 2228 of 2304 pixels, none before.
+  EXPECT_GE(whole, moments.size() * 95 / 100);
+}
+
 TEST_F(SoftShadowTest, a_blocked_sample_reports_the_penumbra_width_in_pixels) {
   // The floor beside the slab: a sample that met the slab's underside (0.475 m up) carries the
   // width of the penumbra there, 2 r dB / (dL - dB) by similar triangles, in pixels at the
