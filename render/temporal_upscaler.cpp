@@ -47,12 +47,9 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                      kCopyUsage, "upscaled display image");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
-    history_[parity] = std::make_unique<StorageImage>(context, outputWidth, outputHeight,
-                                                      VK_FORMAT_R16G16B16A16_SFLOAT, 0,
-                                                      "upscale history" + suffix);
-    instance_[parity] =
-        std::make_unique<StorageImage>(context, outputWidth, outputHeight, VK_FORMAT_R32_UINT, 0,
-                                       "upscale history instance" + suffix);
+    history_[parity] =
+        std::make_unique<StorageImage>(context, outputWidth, outputHeight,
+                                       VK_FORMAT_R32G32B32A32_UINT, 0, "upscale history" + suffix);
   }
 }
 
@@ -66,8 +63,6 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
       {BINDING_UPSCALE_MOTION, motion_->view()},
       {BINDING_UPSCALE_HISTORY, history_[previous]->view()},
       {BINDING_UPSCALE_HISTORY_NEXT, history_[current]->view()},
-      {BINDING_UPSCALE_INSTANCE, instance_[previous]->view()},
-      {BINDING_UPSCALE_INSTANCE_NEXT, instance_[current]->view()},
       {BINDING_DISPLAY_IMAGE, display_->view()},
   };
 }

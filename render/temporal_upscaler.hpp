@@ -44,7 +44,7 @@ class TemporalUpscaler {
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;
   std::unique_ptr<StorageImage> motion_, display_;
-  std::array<std::unique_ptr<StorageImage>, 2> history_, instance_;
+  std::array<std::unique_ptr<StorageImage>, 2> history_;
   VkPipeline resolve_ = VK_NULL_HANDLE;
 };
 

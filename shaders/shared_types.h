@@ -50,12 +50,12 @@ using uint = uint32_t;
 #define BINDING_TRIANGLE_MATERIALS 27  // per-triangle materials of meshes with several
 // Temporal upscaling (a renderer with an output size): ray-gen's motion at the render size, and
 // the history and picture at the output size.
-#define BINDING_UPSCALE_MOTION 28   // rgba32f: previous pixel xy, distance z, first instance + 1 w
-#define BINDING_UPSCALE_HISTORY 29  // rgba16f: accumulated display rgb, its weight a (prev.)
-#define BINDING_UPSCALE_HISTORY_NEXT 30   // this frame's
-#define BINDING_UPSCALE_INSTANCE 31       // r32ui: instance + 1 the history shows (prev.; 0: none)
-#define BINDING_UPSCALE_INSTANCE_NEXT 32  // this frame's
-#define BINDING_DISPLAY_IMAGE 33          // rgba8: the upscaled picture, sRGB-encoded
+#define BINDING_UPSCALE_MOTION 28  // rgba32f: previous pixel xy, distance z, first instance + 1 w
+// rgba32ui: accumulated display rgb and its weight as four half floats (xy), the instance + 1
+// the history shows (z; 0: none); the previous frame's
+#define BINDING_UPSCALE_HISTORY 29
+#define BINDING_UPSCALE_HISTORY_NEXT 30  // this frame's
+#define BINDING_DISPLAY_IMAGE 33         // rgba8: the upscaled picture, sRGB-encoded
 // r32ui, one texel per denoiser work-group: the stamp of the last frame whose temporal pass left
 // a pixel there with variance for the a-trous iterations to filter.
 #define BINDING_FILTER_TILES 34

@@ -16,13 +16,11 @@ layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlo
 // The tonemap's output at the render size.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
 layout(set = 0, binding = BINDING_UPSCALE_MOTION, rgba32f) uniform readonly image2D motionImage;
-layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba16f) uniform readonly image2D historyImage;
-layout(set = 0, binding = BINDING_UPSCALE_HISTORY_NEXT, rgba16f) uniform writeonly image2D
+// The history: its rgb and weight as four half floats (packHalf2x16 of rg and of b and the
+// weight) and the instance + 1 it shows (0: none), one read and one store a pixel.
+layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba32ui) uniform readonly uimage2D historyImage;
+layout(set = 0, binding = BINDING_UPSCALE_HISTORY_NEXT, rgba32ui) uniform writeonly uimage2D
     historyNextImage;
-layout(set = 0, binding = BINDING_UPSCALE_INSTANCE, r32ui) uniform readonly uimage2D
-    historyInstanceImage;
-layout(set = 0, binding = BINDING_UPSCALE_INSTANCE_NEXT, r32ui) uniform writeonly uimage2D
-    historyInstanceNextImage;
 layout(set = 0, binding = BINDING_DISPLAY_IMAGE, rgba8) uniform writeonly image2D displayImage;
 
 // Where the camera holds still and what the pixel shows does not move, the clamp's range takes
@@ -44,6 +42,10 @@ const float kSampleRadius = 1.0;
 // the bilinear upscale of this frame, so the first frames look like a plain upscale.
 const float kEnoughWeight = 1.0;
 const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pixel
+
+vec4 historyColourAndWeight(uvec4 texel) {
+  return vec4(unpackHalf2x16(texel.x), unpackHalf2x16(texel.y));
+}
 
 float sampleWeight(vec2 offset) {
   float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
@@ -143,7 +145,8 @@ void main() {
   // The history is dropped where it showed a moving instance other than the one seen now: what
   // the mover uncovered (no trail behind it).
   if (frame.denoise.x == 0u && motion.z > 0.0 && onImage) {
-    uint shown = imageLoad(historyInstanceImage, previousPixel).r;
+    uvec4 nearestHistory = imageLoad(historyImage, previousPixel);
+    uint shown = nearestHistory.z;
     if (shown == seenInstance || !instanceMoved(shown)) {
       // Bilinear over the four history pixels around `previous` that are on the image.
       vec2 from = floor(previous);
@@ -155,7 +158,9 @@ void main() {
         float w = ((tap & 1) != 0 ? g.x : 1.0 - g.x) * ((tap >> 1) != 0 ? g.y : 1.0 - g.y);
         if (w == 0.0 || any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, outputSize)))
           continue;
-        sum += w * imageLoad(historyImage, at);
+        // The nearest one was read already (a still view's only tap).
+        sum += w * historyColourAndWeight(at == previousPixel ? nearestHistory
+                                                               : imageLoad(historyImage, at));
         taps += w;
       }
       if (taps > 1.0e-3) {
@@ -171,8 +176,9 @@ void main() {
   float total = historyWeight + weight;
   vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
   vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
-  imageStore(historyNextImage, pixel, vec4(accumulated, total));
-  imageStore(historyInstanceNextImage, pixel, uvec4(seenInstance));
+  imageStore(historyNextImage, pixel,
+             uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
+                   seenInstance, 0u));
   // Quantized with round-to-nearest, as the tonemap does, so the UNORM store is exact.
   imageStore(displayImage, pixel, vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0));
 }
