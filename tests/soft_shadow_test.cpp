@@ -537,6 +537,46 @@ TEST_F(SoftShadowTest, a_still_view_keeps_its_whole_history_while_the_picture_is
   EXPECT_GE(whole, moments.size() * 95 / 100);
 }
 
+TEST_F(SoftShadowTest, the_visibility_is_interpolated_at_the_rays_offset_within_the_pixel) {
+  // A denoised pixel averages samples from all over it, so the tonemap interpolates the
+  // denoised visibility between pixel centres at the frame's ray offset: what the temporal
+  // upscaler needs to resolve a shadow's edge inside the render pixels. With a sun of no size
+  // the visibility is exactly 0 or 1, and with the rays 0.49 px right of the centres a
+  // pixel beside the edge shows about half of each side: a step of one pixel becomes a ramp.
+  // (Drawn in whole pixels, no such pixel exists.)
+  scene::LightDesc sun;
+  sun.type = scene::LightType::Directional;
+  sun.direction = glm::vec3(1, -1, 0);  // the slab's shadow: columns between x = 0.2 and 0.8
+  sun.intensity = 1.0f;
+  auto renderer = makeRenderer(slabScene(sun), /*allFeatures=*/true);
+  ASSERT_TRUE(renderer->softShadows());
+  for (uint32_t frame = 0; frame < 4; ++frame) {
+    scene::FrameDesc desc = frameAt(frame);
+    desc.jitter = glm::vec2(0.49f, 0.0f);
+    renderer->renderFrame(desc);
+  }
+  const std::vector<uint8_t>& pixels = renderer->pixels();
+  const auto green = [&](uint32_t x, uint32_t y) {
+    return int(pixels[(size_t(y) * kSize + x) * 4 + 1]);
+  };
+  uint32_t ramps = 0, steps = 0;
+  for (uint32_t y = 0; y < kSize; ++y) {
+    for (uint32_t x = 1; x + 1 < kSize; ++x) {
+      const int low = std::min(green(x - 1, y), green(x + 1, y));
+      const int high = std::max(green(x - 1, y), green(x + 1, y));
+      if (high - low < 40) continue;  // not across the shadow's edge
+      ++steps;
+      const int margin = (high - low) / 5;
+      ramps += green(x, y) > low + margin && green(x, y) < high - margin;
+    }
+  }
+  // Steps: the slab's outline (another instance: never interpolated across) and its shadow's
+  // far edge on the floor, each counted at the two pixels around it (48 here). Ramps: one in
+  // each of the shadow edge's rows (12 here; 0 drawn in whole pixels).
+  EXPECT_GT(steps, kSize / 2);
+  EXPECT_GE(ramps, 10u) << "of " << steps;
+}
+
 TEST_F(SoftShadowTest, a_blocked_sample_reports_the_penumbra_width_in_pixels) {
   // The floor beside the slab: a sample that met the slab's underside (0.475 m up) carries the
   // width of the penumbra there, 2 r dB / (dL - dB) by similar triangles, in pixels at the
