@@ -140,8 +140,9 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
 }
 
 // Integrates this frame's sample `current` at `pixel`, whose surface and instance are
-// `packedSurface` (as surfaceImage holds them), into the history, and writes the spatial filter's
-// input and the next history. Returns whether the estimate has variance.
+// `packedSurface` (as surfaceImage holds them; never sky, which keepWithoutSurface takes), into
+// the history, and writes the spatial filter's input and the next history. Returns whether the
+// estimate has variance.
 bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) {
   bool reset = frame.denoise.x != 0u;
   bool reference = frame.denoise.y != 0u;
@@ -156,7 +157,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   float historyLength = 0.0;
   float historyCap = MAX_HISTORY_LENGTH;
   vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
-  if (!reset && surface.w >= 0.0 && motion.z >= 0.0) {
+  if (!reset && motion.z >= 0.0) {
     // On a grid of 1/256 pixel: a still view's motion, rounding left over from projecting the
     // pixel's point back, becomes exactly 0, and the three taps of weight 0 are not read.
     vec2 previous =
@@ -211,7 +212,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   }
   // Where ray-gen expected no history (a reset, or the motion it wrote says "nowhere") it
   // traced DENOISER_FRESH_HISTORY_FRAMES frames' worth of samples, which count as that many.
-  bool fresh = !reference && surface.w >= 0.0 && (reset || motion.z < 0.0);
+  bool fresh = !reference && (reset || motion.z < 0.0);
   float currentFrames = fresh ? float(DENOISER_FRESH_HISTORY_FRAMES) : 1.0;
   historyLength = min(historyLength + currentFrames, reference ? 1.0e9 : historyCap);
   if (!reference && historyLength > currentFrames) {

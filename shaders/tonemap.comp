@@ -25,9 +25,10 @@ vec3 denoisedVisibility(ivec2 pixel) {
 // upscaled picture would show it as one block; interpolated between the pixel centres at the
 // ray's offset, and only from pixels of the same instance, the upscaler sees a shadow's edge
 // move within the pixel and resolves it as it resolves a silhouette. Without an offset (no
-// upscaling) this is the pixel's own value.
+// upscaling), and in reference accumulation (each pixel's own average is the truth there), this
+// is the pixel's own value.
 vec3 visibilityAtRay(ivec2 pixel) {
-  if (frame.upscale.xy == vec2(0.0)) return denoisedVisibility(pixel);
+  if (frame.upscale.xy == vec2(0.0) || frame.denoise.y != 0u) return denoisedVisibility(pixel);
   vec2 position = vec2(pixel) + frame.upscale.xy;
   ivec2 base = ivec2(floor(position));
   vec2 f = position - vec2(base);
@@ -51,10 +52,7 @@ void main() {
   if (pixel.x >= int(frame.sizeFrameLights.x) || pixel.y >= int(frame.sizeFrameLights.y)) return;
   vec3 radiance = imageLoad(hdrImage, pixel).rgb;
 #if SOFT_SHADOWS
-  // Reference accumulation keeps each pixel's own average (its samples are the truth there).
-  vec3 visibility =
-      frame.denoise.y != 0u ? denoisedVisibility(pixel) : visibilityAtRay(pixel);
-  radiance += imageLoad(softLightImage, pixel).rgb * visibility;
+  radiance += imageLoad(softLightImage, pixel).rgb * visibilityAtRay(pixel);
 #endif
   radiance *= frame.exposureTonemap.x;
   // Saturate, never overflow: both curves are flat at 1 long before 1e4 (ACES from 7.3), and
