@@ -39,7 +39,9 @@ static_assert(scene::kTextureRoles == TEXTURE_ROLES &&
 constexpr VkShaderStageFlags kRayStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
     VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
-constexpr VkShaderStageFlags kAllStages = kRayStages | VK_SHADER_STAGE_COMPUTE_BIT;
+// The fragment stage: the temporal upscaler's resolve.
+constexpr VkShaderStageFlags kAllStages =
+    kRayStages | VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr VkBufferUsageFlags kGeometryUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
     VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
@@ -866,7 +868,8 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
   // Earlier frames' passes read and wrote what this frame's trace and passes overwrite.
   memoryBarrier(commands,
                 VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT |
-                    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+                    VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                 VK_ACCESS_SHADER_WRITE_BIT,
                 VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
@@ -905,19 +908,19 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
                             &descriptorSets_[parity_], 0, nullptr);
     vkCmdDispatch(commands, (pictureWidth_ + 7) / 8, (pictureHeight_ + 7) / 8, 1);
-    if (upscaler_) {
-      memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
-                    VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-      upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_]);
-    }
+    if (upscaler_) upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_);
   }
   stamp(3);
   const VkImage picture = outputImage();
   if (readback && !probeOnly) {
-    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_GENERAL,
-                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_READ_BIT);
+    // The picture: the tonemap's (a compute shader) or the upscaler's (a colour attachment).
+    const VkPipelineStageFlags pictureStage = upscaler_
+                                                  ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT
+                                                  : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+    imageLayoutBarrier(
+        commands, picture, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+        pictureStage, upscaler_ ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_SHADER_WRITE_BIT,
+        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {shownWidth(), shownHeight(), 1};
@@ -926,9 +929,10 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     // Back to GENERAL for the next frame's passes, after the copy has read it.
-    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                       VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                       VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+    imageLayoutBarrier(
+        commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, pictureStage,
+        upscaler_ ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_SHADER_WRITE_BIT);
   }
   // The counters, for the host: a few hundred bytes.
   memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,

@@ -49,8 +49,10 @@ EShLanguage stageFromExtension(const fs::path& file) {
   if (extension == ".rahit") return EShLangAnyHit;
   if (extension == ".rint") return EShLangIntersect;
   if (extension == ".comp") return EShLangCompute;
+  if (extension == ".vert") return EShLangVertex;
+  if (extension == ".frag") return EShLangFragment;
   throw ShaderCompileError(file.string() + ": unknown shader stage extension '" + extension +
-                           "' (expected .rgen .rmiss .rchit .rahit .rint .comp)");
+                           "' (expected .rgen .rmiss .rchit .rahit .rint .comp .vert .frag)");
 }
 
 bool isInside(const fs::path& root, const fs::path& path) {

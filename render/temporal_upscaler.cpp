@@ -3,9 +3,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/barriers.hpp"
 #include "render/context.hpp"
-#include "render/denoiser.hpp"
+#include "render/ray_tracing_pipeline.hpp"
 #include "render/shader_compiler.hpp"
+#include "render/vulkan_error.hpp"
 #include "shaders/shared_types.h"
 
 namespace render {
@@ -39,44 +41,171 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                 " is smaller than the render size " + std::to_string(renderWidth) +
                                 "x" + std::to_string(renderHeight));
   }
-  constexpr VkImageUsageFlags kCopyUsage = VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   motion_ = std::make_unique<StorageImage>(context, renderWidth, renderHeight,
                                            VK_FORMAT_R32G32B32A32_SFLOAT, 0, "upscale motion");
-  display_ =
-      std::make_unique<StorageImage>(context, outputWidth, outputHeight, VK_FORMAT_R8G8B8A8_UNORM,
-                                     kCopyUsage, "upscaled display image");
+  display_ = std::make_unique<StorageImage>(
+      context, outputWidth, outputHeight, kDisplayFormat,
+      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+      "upscaled display image");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
-    history_[parity] =
-        std::make_unique<StorageImage>(context, outputWidth, outputHeight,
-                                       VK_FORMAT_R32G32B32A32_UINT, 0, "upscale history" + suffix);
+    history_[parity] = std::make_unique<StorageImage>(
+        context, outputWidth, outputHeight, kHistoryFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
+        "upscale history" + suffix);
   }
+  createRenderPass();
 }
 
 TemporalUpscaler::~TemporalUpscaler() {
-  if (resolve_) vkDestroyPipeline(context_.device(), resolve_, nullptr);
+  const VkDevice device = context_.device();
+  if (resolve_) vkDestroyPipeline(device, resolve_, nullptr);
+  for (VkFramebuffer framebuffer : framebuffers_)
+    if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
+  if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
+}
+
+void TemporalUpscaler::createRenderPass() {
+  // Both attachments stay in GENERAL (the shaders read the history as a storage image, the
+  // picture is copied from) and are written whole, so nothing is loaded; the barriers in
+  // record() order the pass against everything else.
+  std::array<VkAttachmentDescription, 2> attachments{};
+  attachments[UPSCALE_ATTACHMENT_DISPLAY].format = kDisplayFormat;
+  attachments[UPSCALE_ATTACHMENT_HISTORY].format = kHistoryFormat;
+  for (VkAttachmentDescription& attachment : attachments) {
+    attachment.samples = VK_SAMPLE_COUNT_1_BIT;
+    attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+    attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
+    attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    attachment.initialLayout = VK_IMAGE_LAYOUT_GENERAL;
+    attachment.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
+  }
+  std::array<VkAttachmentReference, 2> references{};
+  references[UPSCALE_ATTACHMENT_DISPLAY] = {UPSCALE_ATTACHMENT_DISPLAY, VK_IMAGE_LAYOUT_GENERAL};
+  references[UPSCALE_ATTACHMENT_HISTORY] = {UPSCALE_ATTACHMENT_HISTORY, VK_IMAGE_LAYOUT_GENERAL};
+  VkSubpassDescription subpass{};
+  subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
+  subpass.colorAttachmentCount = uint32_t(references.size());
+  subpass.pColorAttachments = references.data();
+  VkRenderPassCreateInfo info{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
+  info.attachmentCount = uint32_t(attachments.size());
+  info.pAttachments = attachments.data();
+  info.subpassCount = 1;
+  info.pSubpasses = &subpass;
+  vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &renderPass_),
+          "vkCreateRenderPass");
+  context_.setName(renderPass_, VK_OBJECT_TYPE_RENDER_PASS, "temporal upscale");
+  for (uint32_t parity = 0; parity < 2; ++parity) {
+    std::array<VkImageView, 2> views{};
+    views[UPSCALE_ATTACHMENT_DISPLAY] = display_->view();
+    views[UPSCALE_ATTACHMENT_HISTORY] = history_[parity]->view();
+    VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    framebufferInfo.renderPass = renderPass_;
+    framebufferInfo.attachmentCount = uint32_t(views.size());
+    framebufferInfo.pAttachments = views.data();
+    framebufferInfo.width = outputWidth_;
+    framebufferInfo.height = outputHeight_;
+    framebufferInfo.layers = 1;
+    vkCheck(
+        vkCreateFramebuffer(context_.device(), &framebufferInfo, nullptr, &framebuffers_[parity]),
+        "vkCreateFramebuffer");
+  }
 }
 
 std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_t parity) const {
-  const uint32_t current = parity & 1u, previous = current ^ 1u;
+  const uint32_t previous = (parity & 1u) ^ 1u;
   return {
       {BINDING_UPSCALE_MOTION, motion_->view()},
       {BINDING_UPSCALE_HISTORY, history_[previous]->view()},
-      {BINDING_UPSCALE_HISTORY_NEXT, history_[current]->view()},
-      {BINDING_DISPLAY_IMAGE, display_->view()},
   };
 }
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
-  resolve_ = createComputePipeline(
-      context_, layout, compiler.compile("temporal_upscale.comp").spirv, "temporal upscale");
+  const VkDevice device = context_.device();
+  const std::array<VkShaderModule, 2> modules = {
+      createShaderModule(context_, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
+      createShaderModule(context_, compiler.compile("temporal_upscale.frag").spirv,
+                         "temporal upscale")};
+  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
+  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
+  stages[0].module = modules[0];
+  stages[0].pName = "main";
+  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
+  stages[1].module = modules[1];
+  stages[1].pName = "main";
+  VkPipelineVertexInputStateCreateInfo vertexInput{
+      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+  VkPipelineInputAssemblyStateCreateInfo assembly{
+      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  const VkViewport viewport{0.0f, 0.0f, float(outputWidth_), float(outputHeight_), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {outputWidth_, outputHeight_}};
+  VkPipelineViewportStateCreateInfo viewportState{
+      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+  viewportState.viewportCount = 1;
+  viewportState.pViewports = &viewport;
+  viewportState.scissorCount = 1;
+  viewportState.pScissors = &scissor;
+  VkPipelineRasterizationStateCreateInfo rasterization{
+      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+  rasterization.polygonMode = VK_POLYGON_MODE_FILL;
+  rasterization.cullMode = VK_CULL_MODE_NONE;
+  rasterization.lineWidth = 1.0f;
+  VkPipelineMultisampleStateCreateInfo multisample{
+      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+  std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{};
+  for (VkPipelineColorBlendAttachmentState& attachment : blendAttachments) {
+    attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+  }
+  VkPipelineColorBlendStateCreateInfo blend{
+      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+  blend.attachmentCount = uint32_t(blendAttachments.size());
+  blend.pAttachments = blendAttachments.data();
+  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
+  info.stageCount = uint32_t(stages.size());
+  info.pStages = stages.data();
+  info.pVertexInputState = &vertexInput;
+  info.pInputAssemblyState = &assembly;
+  info.pViewportState = &viewportState;
+  info.pRasterizationState = &rasterization;
+  info.pMultisampleState = &multisample;
+  info.pColorBlendState = &blend;
+  info.layout = layout;
+  info.renderPass = renderPass_;
+  const VkResult result =
+      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &resolve_);
+  for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
+  vkCheck(result, "vkCreateGraphicsPipelines");
+  context_.setName(resolve_, VK_OBJECT_TYPE_PIPELINE, "temporal upscale");
 }
 
 void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
-                              VkDescriptorSet set) const {
-  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_);
-  vkCmdDispatch(commands, (outputWidth_ + 7) / 8, (outputHeight_ + 7) / 8, 1);
+                              VkDescriptorSet set, uint32_t parity) const {
+  // This frame's picture (the tonemap) and motion (ray-gen) before the fragment shader reads
+  // them; the earlier frames' reads of the picture (copies) and of the history this pass
+  // overwrites, and their writes of the history it reads, before the attachments' writes.
+  memoryBarrier(
+      commands,
+      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR |
+          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT |
+          VK_PIPELINE_STAGE_TRANSFER_BIT,
+      VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+      VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = renderPass_;
+  begin.framebuffer = framebuffers_[parity & 1u];
+  begin.renderArea = {{0, 0}, {outputWidth_, outputHeight_}};
+  vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0,
+                          nullptr);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, resolve_);
+  vkCmdDraw(commands, 3, 1, 0, 0);
+  vkCmdEndRenderPass(commands);
 }
 
 }  // namespace render

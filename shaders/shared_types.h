@@ -54,8 +54,10 @@ using uint = uint32_t;
 // rgba32ui: accumulated display rgb and its weight as four half floats (xy), the instance + 1
 // the history shows (z; 0: none); the previous frame's
 #define BINDING_UPSCALE_HISTORY 29
-#define BINDING_UPSCALE_HISTORY_NEXT 30  // this frame's
-#define BINDING_DISPLAY_IMAGE 33         // rgba8: the upscaled picture, sRGB-encoded
+// The resolve's colour attachments: the upscaled picture (rgba8, sRGB-encoded) and this frame's
+// history (as above).
+#define UPSCALE_ATTACHMENT_DISPLAY 0
+#define UPSCALE_ATTACHMENT_HISTORY 1
 // r32ui, one texel per denoiser work-group: the stamp of the last frame whose temporal pass left
 // a pixel there with variance for the a-trous iterations to filter.
 #define BINDING_FILTER_TILES 34
