@@ -275,7 +275,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   probeSetup_.write(&noProbes, sizeof noProbes);
   if (options.outputWidth > 0 && options.outputHeight > 0) {
     upscaler_ = std::make_unique<TemporalUpscaler>(context, options.width, options.height,
-                                                   options.outputWidth, options.outputHeight);
+                                                   options.outputWidth, options.outputHeight,
+                                                   options.resolveWrites);
   }
   readback_ = Buffer(context, VkDeviceSize(outputWidth()) * outputHeight() * 4,
                      VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback, "pixel readback");
@@ -913,14 +914,15 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
   stamp(3);
   const VkImage picture = outputImage();
   if (readback && !probeOnly) {
-    // The picture: the tonemap's (a compute shader) or the upscaler's (a colour attachment).
-    const VkPipelineStageFlags pictureStage = upscaler_
-                                                  ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT
-                                                  : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
-    imageLayoutBarrier(
-        commands, picture, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-        pictureStage, upscaler_ ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_SHADER_WRITE_BIT,
-        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    // The picture: the tonemap's (a compute shader) or the upscaler's.
+    const VkPipelineStageFlags pictureStage =
+        upscaler_ ? upscaler_->pictureStage()
+                  : VkPipelineStageFlags{VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT};
+    const VkAccessFlags pictureAccess =
+        upscaler_ ? upscaler_->pictureAccess() : VkAccessFlags{VK_ACCESS_SHADER_WRITE_BIT};
+    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, pictureStage, pictureAccess,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy region{};
     region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
     region.imageExtent = {shownWidth(), shownHeight(), 1};
@@ -929,10 +931,9 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
     // Back to GENERAL for the next frame's passes, after the copy has read it.
-    imageLayoutBarrier(
-        commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
-        VK_PIPELINE_STAGE_TRANSFER_BIT, 0, pictureStage,
-        upscaler_ ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_SHADER_WRITE_BIT);
+    imageLayoutBarrier(commands, picture, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                       VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, pictureStage,
+                       pictureAccess);
   }
   // The counters, for the host: a few hundred bytes.
   memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,

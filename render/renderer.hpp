@@ -56,6 +56,9 @@ struct RendererOptions {
   // render size again gives plain temporal anti-aliasing. Probe frames are never jittered.
   uint32_t outputWidth = 0;
   uint32_t outputHeight = 0;
+  // How the upscaler's resolve writes its results (the same either way; Auto: colour
+  // attachments on CPU drivers, image stores on GPUs).
+  ResolveWrites resolveWrites = ResolveWrites::Auto;
 };
 
 // GPU time of each pass from timestamp queries (0 where the device has no timestamps).

@@ -5,6 +5,7 @@
 
 #include "render/barriers.hpp"
 #include "render/context.hpp"
+#include "render/denoiser.hpp"
 #include "render/ray_tracing_pipeline.hpp"
 #include "render/shader_compiler.hpp"
 #include "render/vulkan_error.hpp"
@@ -31,8 +32,12 @@ glm::vec2 TemporalUpscaler::jitter(uint32_t index) {
 
 TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                    uint32_t renderHeight, uint32_t outputWidth,
-                                   uint32_t outputHeight)
-    : context_(context), outputWidth_(outputWidth), outputHeight_(outputHeight) {
+                                   uint32_t outputHeight, ResolveWrites writes)
+    : context_(context),
+      outputWidth_(outputWidth),
+      outputHeight_(outputHeight),
+      attachments_(writes == ResolveWrites::Attachments ||
+                   (writes == ResolveWrites::Auto && context.isCpuDevice())) {
   // The resolve weighs each sample by a bump one output pixel wide: with fewer output pixels
   // than samples, some pixels would get no sample's weight at all.
   if (outputWidth < renderWidth || outputHeight < renderHeight) {
@@ -43,17 +48,16 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
   }
   motion_ = std::make_unique<StorageImage>(context, renderWidth, renderHeight,
                                            VK_FORMAT_R32G32B32A32_SFLOAT, 0, "upscale motion");
-  display_ = std::make_unique<StorageImage>(
-      context, outputWidth, outputHeight, kDisplayFormat,
-      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-      "upscaled display image");
+  const VkImageUsageFlags written = attachments_ ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : 0;
+  display_ = std::make_unique<StorageImage>(context, outputWidth, outputHeight, kDisplayFormat,
+                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | written,
+                                            "upscaled display image");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
     history_[parity] = std::make_unique<StorageImage>(
-        context, outputWidth, outputHeight, kHistoryFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-        "upscale history" + suffix);
+        context, outputWidth, outputHeight, kHistoryFormat, written, "upscale history" + suffix);
   }
-  createRenderPass();
+  if (attachments_) createRenderPass();
 }
 
 TemporalUpscaler::~TemporalUpscaler() {
@@ -113,14 +117,28 @@ void TemporalUpscaler::createRenderPass() {
 }
 
 std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_t parity) const {
-  const uint32_t previous = (parity & 1u) ^ 1u;
-  return {
+  const uint32_t current = parity & 1u, previous = current ^ 1u;
+  std::vector<std::pair<uint32_t, VkImageView>> images = {
       {BINDING_UPSCALE_MOTION, motion_->view()},
       {BINDING_UPSCALE_HISTORY, history_[previous]->view()},
   };
+  if (!attachments_) {
+    images.push_back({BINDING_UPSCALE_HISTORY_NEXT, history_[current]->view()});
+    images.push_back({BINDING_DISPLAY_IMAGE, display_->view()});
+  }
+  return images;
 }
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
+  if (attachments_) {
+    createGraphicsPipeline(compiler, layout);
+  } else {
+    resolve_ = createComputePipeline(
+        context_, layout, compiler.compile("temporal_upscale.comp").spirv, "temporal upscale");
+  }
+}
+
+void TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
   const VkDevice device = context_.device();
   const std::array<VkShaderModule, 2> modules = {
       createShaderModule(context_, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
@@ -183,8 +201,28 @@ void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout
   context_.setName(resolve_, VK_OBJECT_TYPE_PIPELINE, "temporal upscale");
 }
 
+VkPipelineStageFlags TemporalUpscaler::pictureStage() const {
+  return attachments_ ? VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT
+                      : VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
+}
+
+VkAccessFlags TemporalUpscaler::pictureAccess() const {
+  return attachments_ ? VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT : VK_ACCESS_SHADER_WRITE_BIT;
+}
+
 void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
                               VkDescriptorSet set, uint32_t parity) const {
+  if (!attachments_) {
+    // The tonemap's picture before the resolve reads it; the earlier frames' accesses of its
+    // images are ordered by the renderer's barrier at the frame's start.
+    memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0,
+                            nullptr);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_);
+    vkCmdDispatch(commands, (outputWidth_ + 7) / 8, (outputHeight_ + 7) / 8, 1);
+    return;
+  }
   // This frame's picture (the tonemap) and motion (ray-gen) before the fragment shader reads
   // them; the earlier frames' reads of the picture (copies) and of the history this pass
   // overwrites, and their writes of the history it reads, before the attachments' writes.

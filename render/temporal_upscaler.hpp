@@ -1,8 +1,7 @@
 #pragma once
 // Temporal upscaling (TAAU): the camera rays are jittered by a sub-pixel sequence, and a pass
 // accumulates each frame's picture into a history kept at the output size, which becomes the
-// presented image (shaders/temporal_upscale.frag, drawn into the picture and the history as
-// colour attachments).
+// presented image (shaders/temporal_upscale.glsl).
 #include <array>
 #include <memory>
 #include <utility>
@@ -18,10 +17,16 @@ namespace render {
 class Context;
 class ShaderCompiler;
 
+// How the resolve writes the picture and the history: as a fragment shader's colour attachments
+// or as a compute shader's image stores. The results are the same; Auto takes the attachments
+// on CPU drivers (lavapipe writes them in whole vectors, image stores a lane at a time) and the
+// image stores on GPUs (the H100's few raster units made the fragment pass 26 times slower).
+enum class ResolveWrites { Auto, Attachments, ImageStores };
+
 class TemporalUpscaler {
  public:
   TemporalUpscaler(const Context& context, uint32_t renderWidth, uint32_t renderHeight,
-                   uint32_t outputWidth, uint32_t outputHeight);
+                   uint32_t outputWidth, uint32_t outputHeight, ResolveWrites writes);
   ~TemporalUpscaler();
   TemporalUpscaler(const TemporalUpscaler&) = delete;
   TemporalUpscaler& operator=(const TemporalUpscaler&) = delete;
@@ -34,10 +39,12 @@ class TemporalUpscaler {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
   // The resolve into frame parity `parity`'s history, ordered after this frame's tonemap and
-  // ray-gen and after the earlier frames' reads of what it overwrites; a readback of the
-  // picture after it waits for the colour attachment output stage.
+  // ray-gen and after the earlier frames' reads of what it overwrites.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
               uint32_t parity) const;
+  // The stage and access that write the picture, for what reads it next.
+  VkPipelineStageFlags pictureStage() const;
+  VkAccessFlags pictureAccess() const;
 
   // The upscaled picture (R8G8B8A8_UNORM holding sRGB-encoded bytes), kept in GENERAL.
   const StorageImage& display() const { return *display_; }
@@ -48,9 +55,11 @@ class TemporalUpscaler {
   static constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;
   static constexpr VkFormat kHistoryFormat = VK_FORMAT_R32G32B32A32_UINT;
   void createRenderPass();
+  void createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
 
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;
+  bool attachments_;  // the fragment shader's colour attachments, else image stores
   std::unique_ptr<StorageImage> motion_, display_;
   std::array<std::unique_ptr<StorageImage>, 2> history_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;

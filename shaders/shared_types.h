@@ -54,8 +54,11 @@ using uint = uint32_t;
 // rgba32ui: accumulated display rgb and its weight as four half floats (xy), the instance + 1
 // the history shows (z; 0: none); the previous frame's
 #define BINDING_UPSCALE_HISTORY 29
-// The resolve's colour attachments: the upscaled picture (rgba8, sRGB-encoded) and this frame's
-// history (as above).
+// This frame's history and the upscaled picture (rgba8, sRGB-encoded): storage images where the
+// resolve is a compute shader (GPUs), colour attachments where it is a fragment shader (CPU
+// drivers).
+#define BINDING_UPSCALE_HISTORY_NEXT 30
+#define BINDING_DISPLAY_IMAGE 33
 #define UPSCALE_ATTACHMENT_DISPLAY 0
 #define UPSCALE_ATTACHMENT_HISTORY 1
 // r32ui, one texel per denoiser work-group: the stamp of the last frame whose temporal pass left

@@ -1,0 +1,180 @@
+// Temporal upscaling (TAAU): this frame's jittered picture at the render size is accumulated
+// into a history at the output size, which follows the motion ray-gen wrote (camera and moving
+// instances), is clamped to the range of this frame's samples around it (no ghosts where the
+// view changed), and is dropped where a moving instance was seen before (no trail behind it).
+// Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
+// This file resolves one output pixel for the two entry points:
+// temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
+// (CPU drivers: a fragment shader writing colour attachments; lavapipe writes those in whole
+// vectors, where a compute shader's image stores go one lane at a time, 1.4 of the pass's 3.8 ms
+// at 640x360; on the H100, whose raster units are few, the same fragment pass took 5.8 ms at
+// 3840x2160 against the compute shader's 0.22).
+
+layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
+layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
+  GpuInstance instances[];
+};
+// The tonemap's output at the render size.
+layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
+layout(set = 0, binding = BINDING_UPSCALE_MOTION, rgba32f) uniform readonly image2D motionImage;
+// The history: its rgb and weight as four half floats (packHalf2x16 of rg and of b and the
+// weight) and the instance + 1 it shows (0: none), one read and one store a pixel.
+layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba32ui) uniform readonly uimage2D historyImage;
+
+// Where the camera holds still and what the pixel shows does not move, the clamp's range takes
+// in the 3x3 samples around the pixel instead of its 2x2: a detail thinner than the samples'
+// spacing (a rail, a plate seen edge-on) falls between the four nearest samples of most
+// frames' jitter, and clamping to them erased what the history had gathered of it
+// (bench-upscale on 13 Colour Lock, static after 16 frames: RMSE 0.0212 with the 2x2 range,
+// 0.0162 with 3x3, 0.0138 with no clamp at all). Moving, the range stays 2x2: a wider one let
+// more of what the history showed elsewhere through (13 moving after 32 frames: 0.0312 with
+// 2x2, 0.0374 with 3x3, 0.0394 with 3x3 wherever a pixel moved under one output pixel).
+// The still range is widened by this share of its width on each side (03 Glass and Mirrors,
+// static after 16 frames: 0.02195 without, 0.02166 with).
+const float kStillRangeMargin = 0.25;
+
+// A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
+// smooth bump about a pixel wide, like the box filter of a supersampled reference.
+const float kSampleRadius = 1.0;
+// Accumulated weight worth one sample at the pixel centre: below it the picture blends towards
+// the bilinear upscale of this frame, so the first frames look like a plain upscale.
+const float kEnoughWeight = 1.0;
+const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pixel
+
+vec4 historyColourAndWeight(uvec4 texel) {
+  return vec4(unpackHalf2x16(texel.x), unpackHalf2x16(texel.y));
+}
+
+float sampleWeight(vec2 offset) {
+  float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
+  return t * t;
+}
+
+bool instanceMoved(uint instancePlusOne) {
+  // Most frames nothing moved: then the instances' motion is not read (on lavapipe these
+  // reads were a fifth of the pass).
+  if (frame.denoise.w == 0u || instancePlusOne == 0u) return false;
+  vec4 rows[3] = instances[instancePlusOne - 1u].previousFromCurrent;
+  return rows[0] != vec4(1.0, 0.0, 0.0, 0.0) || rows[1] != vec4(0.0, 1.0, 0.0, 0.0) ||
+         rows[2] != vec4(0.0, 0.0, 1.0, 0.0);
+}
+
+// The pixel's picture (rgba8, sRGB-encoded) and its history for the next frame (as above).
+void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
+  ivec2 outputSize = ivec2(frame.upscale.zw);
+  ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
+  vec2 scale = vec2(renderSize) / vec2(outputSize);  // render pixels per output pixel
+  vec2 jitter = frame.upscale.xy;
+  // This pixel's centre in render pixels, where this frame's sample i lies at i + jitter.
+  vec2 samplePosition = (vec2(pixel) + 0.5) * scale - 0.5 - jitter;
+
+  // The four samples around this pixel: the bilinear upscale, their range (for the clamp) and
+  // their weighted sum for this pixel.
+  vec2 base = floor(samplePosition);
+  vec2 f = samplePosition - base;
+  vec3 corners[4];
+  vec3 low = vec3(1.0), high = vec3(0.0), weighted = vec3(0.0);
+  float weight = 0.0;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 offset = ivec2(corner & 1, corner >> 1);
+    ivec2 at = clamp(ivec2(base) + offset, ivec2(0), renderSize - 1);
+    vec3 colour = imageLoad(currentImage, at).rgb;
+    corners[corner] = colour;
+    low = min(low, colour);
+    high = max(high, colour);
+    float w = sampleWeight((vec2(offset) - f) / scale);
+    weighted += w * colour;
+    weight += w;
+  }
+  vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
+
+  // Where this pixel's point was in the previous frame, in output pixels: the motion (render
+  // pixels, without this frame's jitter) of whichever of the four samples around it is nearest
+  // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
+  // the foreground's motion so carries the pixels around its edge, which moves as one piece
+  // instead of splitting into the samples' 4-pixel steps.
+  ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
+  vec4 motion = imageLoad(motionImage, nearest);
+  ivec2 motionSample = nearest;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+    if (at == nearest) continue;
+    vec4 candidate = imageLoad(motionImage, at);
+    if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
+      motion = candidate;
+      motionSample = at;
+    }
+  }
+  uint seenInstance = uint(motion.w);
+  // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
+  // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are
+  // not read.
+  vec2 previous =
+      vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale * kMotionGrid) /
+                        kMotionGrid;
+  bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
+                     frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
+                     frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
+                     frame.previousCameraForward.xyz == frame.cameraForward.xyz;
+  if (cameraStill && !instanceMoved(seenInstance)) {
+    // The four samples around the pixel are in the range already. The 3x3 is centred on the
+    // nearest of them, so its other five lie in the column and the row just past the four on
+    // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
+    // cost lavapipe more than the loads themselves.)
+    ivec2 beyond = ivec2(base) + mix(ivec2(-1), ivec2(2), greaterThan(nearest, ivec2(base)));
+    ivec2 first = ivec2(base), second = ivec2(base) + 1;
+    ivec2 extra[5] = ivec2[5](ivec2(beyond.x, first.y), ivec2(beyond.x, second.y),
+                              ivec2(first.x, beyond.y), ivec2(second.x, beyond.y), beyond);
+    for (int i = 0; i < 5; ++i) {
+      vec3 colour = imageLoad(currentImage, clamp(extra[i], ivec2(0), renderSize - 1)).rgb;
+      low = min(low, colour);
+      high = max(high, colour);
+    }
+    vec3 spread = high - low;
+    low -= kStillRangeMargin * spread;
+    high += kStillRangeMargin * spread;
+  }
+  vec3 history = vec3(0.0);
+  float historyWeight = 0.0;
+  ivec2 previousPixel = ivec2(floor(previous + 0.5));
+  bool onImage = all(greaterThanEqual(previousPixel, ivec2(0))) &&
+                 all(lessThan(previousPixel, outputSize));
+  // The history is dropped where it showed a moving instance other than the one seen now: what
+  // the mover uncovered (no trail behind it).
+  if (frame.denoise.x == 0u && motion.z > 0.0 && onImage) {
+    uvec4 nearestHistory = imageLoad(historyImage, previousPixel);
+    uint shown = nearestHistory.z;
+    if (shown == seenInstance || !instanceMoved(shown)) {
+      // Bilinear over the four history pixels around `previous` that are on the image.
+      vec2 from = floor(previous);
+      vec2 g = previous - from;
+      vec4 sum = vec4(0.0);
+      float taps = 0.0;
+      for (int tap = 0; tap < 4; ++tap) {
+        ivec2 at = ivec2(from) + ivec2(tap & 1, tap >> 1);
+        float w = ((tap & 1) != 0 ? g.x : 1.0 - g.x) * ((tap >> 1) != 0 ? g.y : 1.0 - g.y);
+        if (w == 0.0 || any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, outputSize)))
+          continue;
+        // The nearest one was read already (a still view's only tap).
+        sum += w * historyColourAndWeight(at == previousPixel ? nearestHistory
+                                                               : imageLoad(historyImage, at));
+        taps += w;
+      }
+      if (taps > 1.0e-3) {
+        history = clamp(sum.rgb / taps, low, high);
+        historyWeight = sum.a / taps;
+      }
+    }
+  }
+  // At most UPSCALE_MAX_HISTORY_FRAMES frames' worth of the weight this pixel expects a frame
+  // (the bump's integral, pi r^2 / 3, over the output pixels a sample covers).
+  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
+  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
+  float total = historyWeight + weight;
+  vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
+  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
+  historyNext = uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
+                      seenInstance, 0u);
+  // Quantized with round-to-nearest, as the tonemap does, so the UNORM write is exact.
+  display = vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0);
+}
