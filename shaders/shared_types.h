@@ -72,8 +72,8 @@ using uint = uint32_t;
 // of the whole scene's structure to reject every opaque instance by its mask cost a quarter of
 // a glass level's frame.
 #define BINDING_GLASS_TLAS 36
-// The most frames the upscaler's history averages (in expected sample weight): a static view
-// has converged after about this many frames.
+// The upscaler's history cap in frames without upscaling (plain TAA); upscaled by k a side the
+// cap comes to this times k^4 frames, so a still view keeps averaging (temporal_upscale.glsl).
 #define UPSCALE_MAX_HISTORY_FRAMES 32.0
 
 #define LIGHT_POINT 0u

@@ -166,8 +166,14 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
       }
     }
   }
-  // At most UPSCALE_MAX_HISTORY_FRAMES frames' worth of the weight this pixel expects a frame
-  // (the bump's integral, pi r^2 / 3, over the output pixels a sample covers).
+  // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral
+  // (pi r^2 / 3 output pixels) over the samples an output pixel gets a frame. A pixel's weight
+  // a frame is that integral times those samples, so while upscaling the cap is that many frames
+  // over their square: 32 frames plainly, 512 at 2x, 8192 at 4x. A still view keeps averaging,
+  // and that is what holds it steady. A pixel gets its weight in lumps, one when a sample lands
+  // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
+  // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
+  // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
   float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
   historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
   float total = historyWeight + weight;
