@@ -130,10 +130,11 @@ int commandPlay(const Options& options) {
     window.reset();
     return fallBack(error.what());
   }
-  std::printf("window: %ux%u, swapchain %s %s, on %s\n", presenter->extent().width,
+  std::printf("window: %ux%u, swapchain %s %s, on %s%s\n", presenter->extent().width,
               presenter->extent().height, render::Presenter::formatName(presenter->format()),
               render::Presenter::presentModeName(presenter->presentMode()),
-              context->deviceInfo().name.c_str());
+              context->deviceInfo().name.c_str(),
+              presenter->hasOwnXConnection() ? ", presenting over its own X connection" : "");
   std::printf(
       "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause "
       "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F12 screenshot; "

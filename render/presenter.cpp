@@ -134,16 +134,11 @@ const char* Presenter::presentModeName(VkPresentModeKHR mode) {
 
 Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync, bool overlayPass)
     : context_(context), window_(window), vsync_(vsync), wantsOverlayPass_(overlayPass) {
-  const VkResult surfaceResult =
-      glfwCreateWindowSurface(context.instance(), window, nullptr, &surface_);
-  if (surfaceResult != VK_SUCCESS) {
-    throw RenderError(std::string("glfwCreateWindowSurface failed (") +
-                      vkResultName(surfaceResult) + ")");
-  }
+  surface_.emplace(context, window);
   try {
     VkBool32 canPresent = VK_FALSE;
     vkCheck(vkGetPhysicalDeviceSurfaceSupportKHR(context.physicalDevice(), context.queueFamily(),
-                                                 surface_, &canPresent),
+                                                 surface_->handle(), &canPresent),
             "vkGetPhysicalDeviceSurfaceSupportKHR");
     if (!canPresent) {
       throw RenderError(context.deviceInfo().name +
@@ -209,8 +204,7 @@ void Presenter::release() {
   blitFinished_ = VK_NULL_HANDLE;
   if (imageAcquired_) vkDestroySemaphore(device, imageAcquired_, nullptr);
   imageAcquired_ = VK_NULL_HANDLE;
-  if (surface_) vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
-  surface_ = VK_NULL_HANDLE;
+  surface_.reset();  // after its swapchain
   if (palette_) vkDestroyImage(device, palette_, nullptr);
   palette_ = VK_NULL_HANDLE;
   if (paletteMemory_) vkFreeMemory(device, paletteMemory_, nullptr);
@@ -279,16 +273,17 @@ void Presenter::createOverlayPass() {
 void Presenter::createSwapchain() {
   const VkPhysicalDevice physicalDevice = context_.physicalDevice();
   VkSurfaceCapabilitiesKHR capabilities{};
-  vkCheck(vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physicalDevice, surface_, &capabilities),
-          "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
+  vkCheck(
+      vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physicalDevice, surface_->handle(), &capabilities),
+      "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
   if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
     throw RenderError("the window surface's images cannot be blit targets");
   if (wantsOverlayPass_ &&
       !(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
     throw RenderError("the window surface's images cannot be drawn to");
   canCapture_ = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
-  const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_);
-  presentMode_ = choosePresentMode(physicalDevice, surface_, vsync_);
+  const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_->handle());
+  presentMode_ = choosePresentMode(physicalDevice, surface_->handle(), vsync_);
 
   VkExtent2D extent = capabilities.currentExtent;
   if (extent.width == UINT32_MAX) {  // the surface takes its size from the swapchain
@@ -315,7 +310,7 @@ void Presenter::createSwapchain() {
   }
 
   VkSwapchainCreateInfoKHR info{VK_STRUCTURE_TYPE_SWAPCHAIN_CREATE_INFO_KHR};
-  info.surface = surface_;
+  info.surface = surface_->handle();
   info.minImageCount = imageCount;
   info.imageFormat = surfaceFormat.format;
   info.imageColorSpace = surfaceFormat.colorSpace;
@@ -521,19 +516,24 @@ void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, u
   imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  // Black bars where the window's aspect ratio differs from the image's.
-  const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
-  const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-  vkCmdClearColorImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
-  memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-
   VkImageBlit blit{};
   blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   blit.srcOffsets[1] = {int32_t(renderer.shownWidth()), int32_t(renderer.shownHeight()), 1};
   blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_, &blit.dstOffsets[0],
                &blit.dstOffsets[1]);
+  // Black bars where the window's aspect ratio differs from the image's. Where the picture
+  // covers the window there are none (on lavapipe the clear cost 0.1-0.3 ms at 1280x720).
+  const bool fillsWindow = blit.dstOffsets[0].x == 0 && blit.dstOffsets[0].y == 0 &&
+                           blit.dstOffsets[1].x == int32_t(extent_.width) &&
+                           blit.dstOffsets[1].y == int32_t(extent_.height);
+  if (!fillsWindow) {
+    const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  }
   vkCmdBlitImage(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, filter_);
 

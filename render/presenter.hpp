@@ -14,6 +14,7 @@
 
 #include "render/buffer.hpp"
 #include "render/image_io.hpp"
+#include "render/window_surface.hpp"
 
 struct GLFWwindow;
 
@@ -81,6 +82,8 @@ class Presenter {
   void setVsync(bool vsync);
   bool vsync() const { return vsync_; }
 
+  // Whether the surface talks to the X server over a connection of its own (WindowSurface).
+  bool hasOwnXConnection() const { return surface_ && surface_->hasOwnConnection(); }
   VkExtent2D extent() const { return extent_; }
   VkFormat format() const { return format_; }
   VkPresentModeKHR presentMode() const { return presentMode_; }
@@ -106,7 +109,7 @@ class Presenter {
   bool vsync_;
   double displayWaitMilliseconds_ = 0.0;  // lastDisplayWaitMilliseconds
   bool swapchainStale_ = false;           // resized, out of date, or vsync changed
-  VkSurfaceKHR surface_ = VK_NULL_HANDLE;
+  std::optional<WindowSurface> surface_;
   VkSwapchainKHR swapchain_ = VK_NULL_HANDLE;
   VkFormat format_ = VK_FORMAT_UNDEFINED;
   VkPresentModeKHR presentMode_ = VK_PRESENT_MODE_FIFO_KHR;

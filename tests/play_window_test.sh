@@ -33,6 +33,12 @@ fail() {
 grep -q "xvfb-run: error" "$log" && fail "Xvfb could not be started here (see above)"
 [ "$status" -eq 0 ] || fail "sightline play exited with status $status"
 grep -q "^window: 1280x720, swapchain " "$log" || fail "no 'window: 1280x720, swapchain ...' line: the window did not open"
+# A CPU driver uploads each image through the X connection: the surface has one of its own,
+# so that the upload does not hold up GLFW's event polling (render/window_surface.hpp).
+if grep -q "^window: .* on llvmpipe" "$log"; then
+  grep -q "^window: .*, presenting over its own X connection$" "$log" ||
+    fail "on lavapipe the surface does not have an X connection of its own"
+fi
 grep -q "^quit after 30 ticks" "$log" || fail "the scripted quit after 30 ticks did not happen"
 grep -q "^quit after 30 ticks, 0 frames shown" "$log" && fail "no frame was presented"
 grep -qi "validation" "$log" && fail "validation messages (see above)"
