@@ -152,6 +152,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   vec3 mean = n.sum / n.count;
   vec3 sigma = sqrt(max(n.sumSquares / n.count - mean * mean, vec3(0.0)));
 
+  float penumbra = n.penumbraSamples > 0.0 ? n.penumbraSum / n.penumbraSamples : -1.0;
   vec3 history = current;
   vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
   float historyLength = 0.0;
@@ -193,8 +194,12 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
     }
     // Each bilinear resampling blurs the history by a variance of f(1 - f) squared pixels per
     // axis, and a running average over L frames holds samples resampled up to about L times:
-    // while the view moves, cap L so the blur's variance stays about a pixel squared (a sharp
-    // shadow edge would otherwise soften frame after frame). A still view (f = 0) keeps 32.
+    // while the view moves, cap L so the blur's standard deviation stays within half the
+    // penumbra's width, and within a pixel where the penumbra is narrower than two (a sharp
+    // shadow edge would otherwise soften frame after frame, while a wide penumbra hardly
+    // changes under a blur much narrower than itself and is better served by a longer average:
+    // 06 Night Watch moving, after 32 frames 0.01041 -> 0.00679; docs/QUALITY.md, session 21).
+    // A still view (f = 0) keeps 32.
     float blur = f.x * (1.0 - f.x) + f.y * (1.0 - f.y);
     if (frame.previousSize.xy != frame.sizeFrameLights.xy) {
       // The resampling's blur is in the previous picture's pixels: after a change of the render
@@ -203,7 +208,8 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
       vec2 spread = f * (1.0 - f) * toCurrent * toCurrent;
       blur = spread.x + spread.y;
     }
-    historyCap = clamp(1.0 / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
+    float blurAllowed = max(1.0, 0.25 * penumbra * penumbra);  // 1 where no width is known
+    historyCap = clamp(blurAllowed / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
     if (weightSum > 1e-3) {
       history = historySum / weightSum;
       moments = momentsSum.xy / weightSum;
@@ -237,7 +243,6 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   vec4 filterInput = vec4(integrated, filterVariance);
   imageStore(filterAImage, pixel, filterInput);
   if (filterVariance < UNFILTERED_VARIANCE_BOUND) imageStore(filterBImage, pixel, filterInput);
-  float penumbra = n.penumbraSamples > 0.0 ? n.penumbraSum / n.penumbraSamples : -1.0;
   // The moments' length (half floats) serves the a-trous passes' test for a young history; the
   // next frame counts on the history's own, in full floats.
   imageStore(momentsNextImage, pixel, vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra));

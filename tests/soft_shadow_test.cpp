@@ -403,6 +403,40 @@ TEST_F(SoftShadowTest, a_strafing_view_keeps_converging_from_16_to_32_frames) {
   EXPECT_LE(after32, after16);
 }
 
+TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wide) {
+  // Moving, each frame's resampling blurs the history, so its length is capped: the blur it
+  // adds up may reach a pixel where the penumbra is narrow, half the penumbra's width where it
+  // is wider. The view strafes 0.32 px a frame, a blur of 0.22 px squared a frame: about 4.6
+  // frames under a narrow penumbra, the whole 32 under a light's wide one (medians over the
+  // penumbra: 26.2 and 4.6 frames; 4.6 for both with the pixel cap everywhere).
+  const auto medianPenumbraHistory = [&](const scene::LightDesc& light) {
+    auto renderer = makeRenderer(slabScene(light));
+    for (uint32_t frame = 0; frame < 32; ++frame) {
+      scene::FrameDesc desc = frameAt(frame);
+      desc.camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
+      renderer->renderFrame(desc);
+    }
+    const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+    const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
+    std::vector<float> lengths;
+    for (size_t i = 0; i < denoised.size(); ++i)
+      if (denoised[i] > 0.05f && denoised[i] < 0.95f) lengths.push_back(moments[i].z);
+    EXPECT_GT(lengths.size(), 20u);
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    return lengths.empty() ? 0.0f : lengths[lengths.size() / 2];
+  };
+  // A 0.8 m light 1.5 m above the slab: its penumbra on the floor is about 6 px wide.
+  const float wide = medianPenumbraHistory(sphereLight(0.4f));
+  // A 0.2 m light to the side: about 1.4 px.
+  scene::LightDesc small = sphereLight(0.1f);
+  small.position = glm::vec3(1.5f, 2.0f, 0.0f);
+  const float narrow = medianPenumbraHistory(small);
+  std::printf("strafing: median history in the penumbra %.1f frames (wide), %.1f (narrow)\n", wide,
+              narrow);
+  EXPECT_GE(wide, 16.0f);
+  EXPECT_LE(narrow, 8.0f);
+}
+
 TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
   const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   // The reference uses a distant stretch of the sequence, independent of the samples tested.
