@@ -4,20 +4,26 @@
 #include <span>
 #include <string>
 
-#include <xcb/xcb.h>  // before vulkan_xcb.h, which declares with its types
-
-#include <vulkan/vulkan_xcb.h>
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>
-#define GLFW_EXPOSE_NATIVE_X11
-#include <GLFW/glfw3native.h>
 
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
+// Last: Xlib's headers define macros (None, Bool, Status, Success) that must not meet the
+// project's names.
+#if SIGHTLINE_GLFW_HAS_X11
+#include <xcb/xcb.h>  // before vulkan_xcb.h, which declares with its types
+
+#include <vulkan/vulkan_xcb.h>
+#define GLFW_EXPOSE_NATIVE_X11
+#include <GLFW/glfw3native.h>
+#endif
+
 namespace render {
 namespace {
 
+#if SIGHTLINE_GLFW_HAS_X11
 bool glfwSurfaceIsXcb() {
   uint32_t count = 0;
   const char** names = glfwGetRequiredInstanceExtensions(&count);
@@ -36,32 +42,42 @@ Display* glfwX11Display() {
   return glfwGetX11Display();
 }
 
+// A surface for the window over a new connection to GLFW's X display; null (and no
+// connection) where that cannot be made, and GLFW's own connection is then the way.
+VkSurfaceKHR createOwnXcbSurface(VkInstance instance, GLFWwindow* window,
+                                 xcb_connection_t** connection) {
+  Display* display = glfwX11Display();
+  if (!display) return VK_NULL_HANDLE;
+  auto createXcbSurface = reinterpret_cast<PFN_vkCreateXcbSurfaceKHR>(
+      vkGetInstanceProcAddr(instance, "vkCreateXcbSurfaceKHR"));
+  if (!createXcbSurface) return VK_NULL_HANDLE;
+  xcb_connection_t* opened = xcb_connect(DisplayString(display), nullptr);
+  VkSurfaceKHR surface = VK_NULL_HANDLE;
+  if (!xcb_connection_has_error(opened)) {
+    VkXcbSurfaceCreateInfoKHR info{VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR};
+    info.connection = opened;
+    info.window = xcb_window_t(glfwGetX11Window(window));
+    if (createXcbSurface(instance, &info, nullptr, &surface) != VK_SUCCESS)
+      surface = VK_NULL_HANDLE;
+  }
+  if (!surface) {
+    xcb_disconnect(opened);
+    return VK_NULL_HANDLE;
+  }
+  *connection = opened;
+  return surface;
+}
+#endif
+
 }  // namespace
 
 WindowSurface::WindowSurface(const Context& context, GLFWwindow* window) : context_(context) {
-  Display* display = context.isCpuDevice() && glfwSurfaceIsXcb() ? glfwX11Display() : nullptr;
-  if (display) {
-    xcb_connection_t* connection = xcb_connect(DisplayString(display), nullptr);
-    if (xcb_connection_has_error(connection)) {
-      xcb_disconnect(connection);  // GLFW's connection still works: use it
-    } else {
-      connection_ = connection;
-      auto createXcbSurface = reinterpret_cast<PFN_vkCreateXcbSurfaceKHR>(
-          vkGetInstanceProcAddr(context.instance(), "vkCreateXcbSurfaceKHR"));
-      VkXcbSurfaceCreateInfoKHR info{VK_STRUCTURE_TYPE_XCB_SURFACE_CREATE_INFO_KHR};
-      info.connection = connection_;
-      info.window = xcb_window_t(glfwGetX11Window(window));
-      const VkResult result = createXcbSurface
-                                  ? createXcbSurface(context.instance(), &info, nullptr, &surface_)
-                                  : VK_ERROR_EXTENSION_NOT_PRESENT;
-      if (result != VK_SUCCESS) {
-        xcb_disconnect(connection_);
-        throw RenderError(std::string("vkCreateXcbSurfaceKHR failed (") + vkResultName(result) +
-                          ")");
-      }
-      return;
-    }
+#if SIGHTLINE_GLFW_HAS_X11
+  if (context.isCpuDevice() && glfwSurfaceIsXcb()) {
+    surface_ = createOwnXcbSurface(context.instance(), window, &connection_);
+    if (surface_) return;
   }
+#endif
   const VkResult result = glfwCreateWindowSurface(context.instance(), window, nullptr, &surface_);
   if (result != VK_SUCCESS)
     throw RenderError(std::string("glfwCreateWindowSurface failed (") + vkResultName(result) + ")");
@@ -69,7 +85,9 @@ WindowSurface::WindowSurface(const Context& context, GLFWwindow* window) : conte
 
 WindowSurface::~WindowSurface() {
   vkDestroySurfaceKHR(context_.instance(), surface_, nullptr);
+#if SIGHTLINE_GLFW_HAS_X11
   if (connection_) xcb_disconnect(connection_);
+#endif
 }
 
 }  // namespace render

@@ -7,7 +7,8 @@
 // that upload held up the game: the next frame's event poll and the interface's window queries
 // wait for a reply, and the reply came only after the server had read the whole image (play
 // under Xvfb: `input` 2.1 ms a frame, 0.1 ms with a connection of its own). Elsewhere (a GPU,
-// Wayland, another system) GLFW makes the surface as usual.
+// Wayland, a GLFW built without X11, a connection or surface that cannot be made) GLFW makes
+// the surface as usual.
 #include <vulkan/vulkan.h>
 
 struct GLFWwindow;

@@ -370,10 +370,11 @@ TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_32_static_frames) {
 
 // A view strafing a third of a pixel a frame: the history is resampled between pixels every
 // frame, which softens a sharp shadow edge a little more each time. The history is kept shorter
-// while the view moves, so that blur stays about a pixel and the error still falls from 16 to
-// 32 frames (with 32 frames kept while moving it grows: 0.0376 after 16, 0.0498 after 32). The
-// comparison starts at 16: the first frame's kFresh frames' worth of samples still show after
-// 8 (0.0207 after 8, 0.0245 after 16, 0.0229 after 32, 0.0173 after 64).
+// while the view moves, so that under a narrow penumbra like this one the blur stays about a
+// pixel and the error still falls from 16 to 32 frames (with 32 frames kept while moving it grows:
+// 0.0376 after 16, 0.0498 after 32). The comparison starts at 16: the first frame's kFresh frames'
+// worth of samples still show after 8 (0.0207 after 8, 0.0245 after 16, 0.0229 after 32, 0.0173
+// after 64).
 TEST_F(SoftShadowTest, a_strafing_view_keeps_converging_from_16_to_32_frames) {
   // A small light well to the side: sharp shadow edges on the floor beside the slab. The view
   // strafes along the slab's side, so the floor it uncovers at the slab's edge is lit (the
@@ -409,14 +410,21 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
   // is wider. The view strafes 0.32 px a frame, a blur of 0.22 px squared a frame: about 4.6
   // frames under a narrow penumbra, the whole 32 under a light's wide one (medians over the
   // penumbra: 26.2 and 4.6 frames; 4.6 for both with the pixel cap everywhere).
+  const auto cameraAt = [](uint32_t frame) {
+    scene::CameraDesc camera = topCamera();
+    camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
+    return camera;
+  };
+  double error = 0.0;  // of the last scene's denoised visibility after 32 frames
   const auto medianPenumbraHistory = [&](const scene::LightDesc& light) {
     auto renderer = makeRenderer(slabScene(light));
     for (uint32_t frame = 0; frame < 32; ++frame) {
       scene::FrameDesc desc = frameAt(frame);
-      desc.camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
+      desc.camera = cameraAt(frame);
       renderer->renderFrame(desc);
     }
     const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
+    error = rmse(denoised, accumulate(slabScene(light), 512, 100000, cameraAt(31)));
     const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
     std::vector<float> lengths;
     for (size_t i = 0; i < denoised.size(); ++i)
@@ -427,14 +435,20 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
   };
   // A 0.8 m light 1.5 m above the slab: its penumbra on the floor is about 6 px wide.
   const float wide = medianPenumbraHistory(sphereLight(0.4f));
+  const double wideError = error;
   // A 0.2 m light to the side: about 1.4 px.
   scene::LightDesc small = sphereLight(0.1f);
   small.position = glm::vec3(1.5f, 2.0f, 0.0f);
   const float narrow = medianPenumbraHistory(small);
-  std::printf("strafing: median history in the penumbra %.1f frames (wide), %.1f (narrow)\n", wide,
-              narrow);
+  std::printf(
+      "strafing: median history in the penumbra %.1f frames (wide), %.1f (narrow); "
+      "RMSE after 32 frames %.5f (wide)\n",
+      wide, narrow, wideError);
   EXPECT_GE(wide, 16.0f);
   EXPECT_LE(narrow, 8.0f);
+  EXPECT_GE(narrow, 4.5f);  // 1 / blur: a narrow penumbra keeps the pixel's cap, not less
+  // The longer average is the better one there: 0.01317 against 0.02027 with the pixel's cap.
+  EXPECT_LT(wideError, 0.017);
 }
 
 TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
