@@ -7,7 +7,8 @@ packages=(
   build-essential cmake pkg-config ninja-build clang-format
   libvulkan-dev vulkan-validationlayers vulkan-tools
   glslang-dev glslang-tools spirv-tools
-  libglm-dev libglfw3-dev libx11-dev libxcb1-dev libxrandr-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libglm-dev libglfw3-dev libtinygltf-dev nlohmann-json3-dev libstb-dev
+  libx11-dev libxcb1-dev libxrandr-dev  # the window's own X connection (render/window_surface.hpp)
   libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core libembree-dev
   xvfb xauth xdotool
   clang libclang-rt-14-dev python3 python3-jsonschema
