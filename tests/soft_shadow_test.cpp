@@ -51,6 +51,21 @@ scene::CameraDesc topCamera() {
   return camera;
 }
 
+// The top view strafing a third of a pixel a frame.
+scene::CameraDesc strafingCamera(uint32_t frame) {
+  scene::CameraDesc camera = topCamera();
+  camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
+  return camera;
+}
+
+// A 0.2 m light well to the side: sharp shadow edges (a penumbra of about 1.4 px) on the floor
+// beside the slab.
+scene::LightDesc smallSideLight() {
+  scene::LightDesc light = sphereLight(0.1f);
+  light.position = glm::vec3(1.5f, 2.0f, 0.0f);
+  return light;
+}
+
 std::vector<float> redChannel(const std::vector<glm::vec4>& texels) {
   std::vector<float> values;
   for (const glm::vec4& texel : texels) values.push_back(texel.r);
@@ -379,27 +394,20 @@ TEST_F(SoftShadowTest, a_strafing_view_keeps_converging_from_16_to_32_frames) {
   // A small light well to the side: sharp shadow edges on the floor beside the slab. The view
   // strafes along the slab's side, so the floor it uncovers at the slab's edge is lit (the
   // history cannot know what was hidden there).
-  scene::LightDesc light = sphereLight(0.1f);
-  light.position = glm::vec3(1.5f, 2.0f, 0.0f);
-  const scene::SceneDesc scene = slabScene(light);
-  const auto cameraAt = [](uint32_t frame) {
-    scene::CameraDesc camera = topCamera();
-    camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
-    return camera;
-  };
+  const scene::SceneDesc scene = slabScene(smallSideLight());
   auto renderer = makeRenderer(scene);
   double after16 = 0.0;
   for (uint32_t frame = 0; frame < 32; ++frame) {
     scene::FrameDesc desc = frameAt(frame);
-    desc.camera = cameraAt(frame);
+    desc.camera = strafingCamera(frame);
     renderer->renderFrame(desc);
     if (frame == 15) {
       after16 = rmse(redChannel(renderer->readDenoiser(DenoiserImage::Denoised)),
-                     accumulate(scene, 512, 100000, cameraAt(15)));
+                     accumulate(scene, 512, 100000, strafingCamera(15)));
     }
   }
   const double after32 = rmse(redChannel(renderer->readDenoiser(DenoiserImage::Denoised)),
-                              accumulate(scene, 512, 100000, cameraAt(31)));
+                              accumulate(scene, 512, 100000, strafingCamera(31)));
   std::printf("strafing: denoised RMSE after 16 frames %.5f, after 32 %.5f\n", after16, after32);
   EXPECT_LE(after32, after16);
 }
@@ -410,45 +418,40 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
   // is wider. The view strafes 0.32 px a frame, a blur of 0.22 px squared a frame: about 4.6
   // frames under a narrow penumbra, the whole 32 under a light's wide one (medians over the
   // penumbra: 26.2 and 4.6 frames; 4.6 for both with the pixel cap everywhere).
-  const auto cameraAt = [](uint32_t frame) {
-    scene::CameraDesc camera = topCamera();
-    camera.position.z += 0.015f * float(frame);  // 4.7 cm per pixel at this height
-    return camera;
+  struct Strafed {
+    float medianPenumbraHistory;
+    double error;  // of the denoised visibility after the 32 frames
   };
-  double error = 0.0;  // of the last scene's denoised visibility after 32 frames
-  const auto medianPenumbraHistory = [&](const scene::LightDesc& light) {
+  const auto strafe = [&](const scene::LightDesc& light) {
     auto renderer = makeRenderer(slabScene(light));
     for (uint32_t frame = 0; frame < 32; ++frame) {
       scene::FrameDesc desc = frameAt(frame);
-      desc.camera = cameraAt(frame);
+      desc.camera = strafingCamera(frame);
       renderer->renderFrame(desc);
     }
     const auto denoised = redChannel(renderer->readDenoiser(DenoiserImage::Denoised));
-    error = rmse(denoised, accumulate(slabScene(light), 512, 100000, cameraAt(31)));
     const auto moments = renderer->readDenoiser(DenoiserImage::Moments);
     std::vector<float> lengths;
     for (size_t i = 0; i < denoised.size(); ++i)
       if (denoised[i] > 0.05f && denoised[i] < 0.95f) lengths.push_back(moments[i].z);
     EXPECT_GT(lengths.size(), 20u);
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-    return lengths.empty() ? 0.0f : lengths[lengths.size() / 2];
+    return Strafed{lengths.empty() ? 0.0f : lengths[lengths.size() / 2],
+                   rmse(denoised, accumulate(slabScene(light), 512, 100000, strafingCamera(31)))};
   };
   // A 0.8 m light 1.5 m above the slab: its penumbra on the floor is about 6 px wide.
-  const float wide = medianPenumbraHistory(sphereLight(0.4f));
-  const double wideError = error;
-  // A 0.2 m light to the side: about 1.4 px.
-  scene::LightDesc small = sphereLight(0.1f);
-  small.position = glm::vec3(1.5f, 2.0f, 0.0f);
-  const float narrow = medianPenumbraHistory(small);
+  const Strafed wide = strafe(sphereLight(0.4f));
+  const Strafed narrow = strafe(smallSideLight());
   std::printf(
       "strafing: median history in the penumbra %.1f frames (wide), %.1f (narrow); "
       "RMSE after 32 frames %.5f (wide)\n",
-      wide, narrow, wideError);
-  EXPECT_GE(wide, 16.0f);
-  EXPECT_LE(narrow, 8.0f);
-  EXPECT_GE(narrow, 4.5f);  // 1 / blur: a narrow penumbra keeps the pixel's cap, not less
+      wide.medianPenumbraHistory, narrow.medianPenumbraHistory, wide.error);
+  EXPECT_GE(wide.medianPenumbraHistory, 16.0f);
+  EXPECT_LE(narrow.medianPenumbraHistory, 8.0f);
+  // 1 / blur: a narrow penumbra keeps the pixel's cap, not less.
+  EXPECT_GE(narrow.medianPenumbraHistory, 4.5f);
   // The longer average is the better one there: 0.01317 against 0.02027 with the pixel's cap.
-  EXPECT_LT(wideError, 0.017);
+  EXPECT_LT(wide.error, 0.017);
 }
 
 TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
