@@ -13,6 +13,7 @@
 #include "app/commands.hpp"
 #include "app/csv_field.hpp"
 #include "app/data_paths.hpp"
+#include "app/quality_plot.hpp"
 #include "app/session.hpp"
 #include "game/level.hpp"
 #include "game/level_loader.hpp"
@@ -57,6 +58,20 @@ struct InterleavedReference {
   ReferenceMeasurement result;
 };
 
+// The frame bench renders as its `index`th: the level's view, or with --strafe the view
+// strafed 1 cm a frame, back and forth over 32 cm (bench-quality's moving runs go 1 cm a frame).
+scene::FrameDesc benchFrame(const game::Level& level, const Options& options, uint32_t index) {
+  constexpr float kStrafeStepMetres = 0.01f;
+  constexpr uint32_t kStrafeSteps = 32;
+  scene::FrameDesc frame = frameFor(level, options, index);
+  if (options.strafe) {
+    const uint32_t phase = index % (2 * kStrafeSteps);
+    const uint32_t steps = phase <= kStrafeSteps ? phase : 2 * kStrafeSteps - phase;
+    frame.camera = strafed(level.camera, kStrafeStepMetres * float(steps));
+  }
+  return frame;
+}
+
 // Median host and per-pass GPU times over `frames` frames after 3 warm-up frames.
 Measurement measure(const render::Context& context, render::ShaderCompiler& compiler,
                     const game::Level& level, const Options& options, uint32_t width,
@@ -65,13 +80,16 @@ Measurement measure(const render::Context& context, render::ShaderCompiler& comp
   render::RendererOptions rendererOptions = rendererOptionsFor(options, width, height);
   rendererOptions.allFeatures = allFeatures;
   render::Renderer renderer(context, compiler, game::buildSceneDesc(level), rendererOptions);
-  for (uint32_t i = 0; i < 3; ++i) renderer.renderFrame(frameFor(level, options, i), false);
+  constexpr uint32_t kWarmUpFrames = 3;
+  for (uint32_t i = 0; i < kWarmUpFrames; ++i)
+    renderer.renderFrame(benchFrame(level, options, i), false);
   const bool withReference = reference && reference->tracer && reference->frames > 0;
   if (withReference) reference->tracer->traceFrame(level.camera, width, height);  // warm-up
   std::vector<double> times, trace, denoise, tonemap, readback, referenceTimes;
   Measurement result;
   for (uint32_t i = 0; i < frames; ++i) {
-    const render::FrameStats stats = renderer.renderFrame(frameFor(level, options, i), false);
+    const render::FrameStats stats =
+        renderer.renderFrame(benchFrame(level, options, kWarmUpFrames + i), false);
     const uint64_t referenceFramesDue =
         withReference ? uint64_t(i + 1) * reference->frames / frames : 0;
     while (referenceTimes.size() < referenceFramesDue) {
@@ -241,6 +259,8 @@ int commandBench(const Options& options) {
       "the CPU, %u threads, single-ray calls, median of %u frames interleaved with the own\n"
       "variant's; switch: load + build to the first probe frame.\n",
       kEmbreeThreads, options.embreeFrames);
+  if (options.strafe)
+    std::printf("the camera strafes 1 cm a frame, back and forth over 32 cm (--strafe).\n");
   std::printf("%-22s %-9s %6s %8s %7s %6s %7s %7s %7s %8s %8s %7s %9s %10s %9s %8s\n", "level",
               "size", "frames", "median", "fps", "trace", "denoise", "tonemap", "readbk", "Mrays/s",
               "all ms", "own/all", "switch ms", "trace Mr/s", "Embree", "/Embree");

@@ -154,6 +154,11 @@ const std::vector<OptionSpec> kOptions{
      "(picture, HUD and text)",
      {"play"}},
     {"--csv", "FILE", "also write the table as CSV", {"bench"}},
+    {"--strafe",
+     "",
+     "the camera strafes 1 cm a frame, back and forth over 32 cm, so the\ndenoiser and the "
+     "upscaler work as for a moving view",
+     {"bench"}},
     {"--json", "FILE", "also write the table as JSON", {"bench"}},
     {"--embree-frames",
      "N",
@@ -358,6 +363,8 @@ Options parseOptions(int argc, char** argv) {
       options.capture = value();
     } else if (argument == "--record") {
       options.record = value();
+    } else if (argument == "--strafe") {
+      options.strafe = true;
     } else if (argument == "--csv") {
       options.csv = value();
     } else if (argument == "--json") {

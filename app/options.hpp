@@ -60,6 +60,7 @@ struct Options {
   std::optional<std::filesystem::path> csv;      // bench: the table as CSV
   std::optional<std::filesystem::path> json;     // bench: the table as JSON
   uint32_t embreeFrames = 30;                    // bench: Embree reference frames (0: none)
+  bool strafe = false;  // bench: the camera strafes back and forth (a moving view's passes)
 };
 
 // Throws UsageError naming the option and what was expected: an unknown option (with the

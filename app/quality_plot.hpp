@@ -1,6 +1,7 @@
 #pragma once
 // What the image-quality benches (bench-quality, bench-upscale) share: a camera strafing to the
-// side, and the frame of an SVG plot (background, title, axes box and labels).
+// side (bench --strafe uses it too), and the frame of an SVG plot (background, title, axes box
+// and labels).
 #include <ostream>
 #include <string>
 

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `sightline bench --csv --json` writes the printed table's rows, per-pass GPU medians and the
-# Embree reference included, at a tiny size with the validation layer on.
+# Embree reference included, at a tiny size with the validation layer on; and --strafe.
 # Usage: bench_output_test.sh path/to/sightline path/to/level.json
 set -uo pipefail
 sightline=$1
@@ -35,6 +35,13 @@ assert set(entry["gpu_pass_median_ms"]) == {"trace", "denoise", "tonemap", "read
 assert abs(entry["median_ms"] - float(row["median_ms"])) <= 1e-3 * entry["median_ms"]
 assert entry["embree"]["rays_per_frame"] == int(row["rays_per_frame"])
 PY
+
+# --strafe moves the camera every frame (the denoiser's and upscaler's moving paths), says so,
+# and leaves the validation layer silent.
+"$sightline" bench "$level" --size 32x18 --frames 3 --embree-frames 0 --strafe --validate \
+  >"$work/strafe.txt" 2>&1 || fail "bench --strafe exited with $?: $(cat "$work/strafe.txt")"
+grep -q "the camera strafes 1 cm a frame" "$work/strafe.txt" ||
+  fail "bench --strafe did not say the camera strafes: $(cat "$work/strafe.txt")"
 
 # Bad input names the option and what it expected.
 output=$("$sightline" bench "$level" --embree-frames many 2>&1)
