@@ -2,7 +2,8 @@
 # Plays every shipped level (or the given ones) for 600 ticks in a 1280x720 window under Xvfb
 # and prints play's frame rate, percentiles, per-part medians and means and the dynamic render
 # scale's range (PLAY_OPTIONS=--fixed-scale keeps the scale), and bench's frame rate for the same
-# render size, one level after the other (docs/PERFORMANCE.md).
+# render size, without and with play's temporal upscaling, one level after the other
+# (docs/PERFORMANCE.md).
 # Usage: bash scripts/play_timings.sh [--binary PATH] [--capture-dir DIR] [-- play options]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -31,4 +32,9 @@ for level in "${levels[@]}"; do
     grep -E "^(playing|quit after|frame parts|picture scale)" || true
   "$binary" bench "$level" --frames 60 --embree-frames 0 --size 320x180 2>&1 |
     grep -E "^${name} " | head -1 | awk '{print "bench: " $4 " ms, " $5 " fps"}'  || true
+  # What the window's picture costs before the blit: on a CPU driver play upscales temporally
+  # to half the 1280x720 window.
+  "$binary" bench "$level" --frames 60 --embree-frames 0 --size 320x180 --upscale 640x360 2>&1 |
+    grep -E "^${name} " | head -1 |
+    awk '{print "bench --upscale 640x360: " $4 " ms, " $5 " fps"}' || true
 done
