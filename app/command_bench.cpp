@@ -183,13 +183,19 @@ void writeCsv(const fs::path& file, const std::vector<BenchRow>& rows) {
   if (!out) throw std::runtime_error("bench: cannot write the CSV file " + file.string());
 }
 
-void writeJson(const fs::path& file, const render::Context& context, uint32_t embreeThreads,
-               const std::vector<BenchRow>& rows) {
+void writeJson(const fs::path& file, const render::Context& context, const Options& options,
+               uint32_t embreeThreads, const std::vector<BenchRow>& rows) {
   nlohmann::ordered_json document;
   document["device"] = {{"name", context.deviceInfo().name},
                         {"driver", context.deviceInfo().driver},
                         {"type", render::deviceTypeName(context.deviceInfo().type)}};
   document["embree_threads"] = embreeThreads;
+  // How the rows were rendered: the camera (--strafe) and the temporal upscaling (--upscale).
+  document["camera"] = options.strafe ? "strafing" : "still";
+  document["upscaled_to"] = options.upscaleSize
+                                ? nlohmann::ordered_json{{"width", options.upscaleSize->first},
+                                                         {"height", options.upscaleSize->second}}
+                                : nlohmann::ordered_json(nullptr);
   nlohmann::ordered_json list = nlohmann::ordered_json::array();
   for (const BenchRow& row : rows) {
     const render::PassTimes& pass = row.own.passMedians;
@@ -307,7 +313,7 @@ int commandBench(const Options& options) {
                 row.own.percentiles.text().c_str());
   }
   if (options.csv) writeCsv(*options.csv, rows);
-  if (options.json) writeJson(*options.json, context, kEmbreeThreads, rows);
+  if (options.json) writeJson(*options.json, context, options, kEmbreeThreads, rows);
   return validationExitCode(context);
 }
 

@@ -30,6 +30,7 @@ assert float(row["denoise_ms"]) >= 0
 assert row["rays_per_frame"] == row["embree_rays_per_frame"], row
 document = json.load(open(json_file))
 assert document["embree_threads"] == 2
+assert document["camera"] == "still" and document["upscaled_to"] is None, document
 entry = document["rows"][0]
 assert set(entry["gpu_pass_median_ms"]) == {"trace", "denoise", "tonemap", "readback"}
 assert abs(entry["median_ms"] - float(row["median_ms"])) <= 1e-3 * entry["median_ms"]
@@ -37,11 +38,18 @@ assert entry["embree"]["rays_per_frame"] == int(row["rays_per_frame"])
 PY
 
 # --strafe moves the camera every frame (the denoiser's and upscaler's moving paths), says so,
-# and leaves the validation layer silent.
+# leaves the validation layer silent, and the JSON records it and the upscaling.
 "$sightline" bench "$level" --size 32x18 --frames 3 --embree-frames 0 --strafe --validate \
-  >"$work/strafe.txt" 2>&1 || fail "bench --strafe exited with $?: $(cat "$work/strafe.txt")"
+  --upscale 64x36 --json "$work/strafe.json" >"$work/strafe.txt" 2>&1 ||
+  fail "bench --strafe exited with $?: $(cat "$work/strafe.txt")"
 grep -q "the camera strafes 1 cm a frame" "$work/strafe.txt" ||
   fail "bench --strafe did not say the camera strafes: $(cat "$work/strafe.txt")"
+python3 - "$work/strafe.json" <<'PY' || exit 1
+import json, sys
+document = json.load(open(sys.argv[1]))
+assert document["camera"] == "strafing", document
+assert document["upscaled_to"] == {"width": 64, "height": 36}, document
+PY
 
 # Bad input names the option and what it expected.
 output=$("$sightline" bench "$level" --embree-frames many 2>&1)
