@@ -423,7 +423,8 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
     double error;  // of the denoised visibility after the 32 frames
   };
   const auto strafe = [&](const scene::LightDesc& light) {
-    auto renderer = makeRenderer(slabScene(light));
+    const scene::SceneDesc scene = slabScene(light);
+    auto renderer = makeRenderer(scene);
     for (uint32_t frame = 0; frame < 32; ++frame) {
       scene::FrameDesc desc = frameAt(frame);
       desc.camera = strafingCamera(frame);
@@ -437,7 +438,7 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
     EXPECT_GT(lengths.size(), 20u);
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
     return Strafed{lengths.empty() ? 0.0f : lengths[lengths.size() / 2],
-                   rmse(denoised, accumulate(slabScene(light), 512, 100000, strafingCamera(31)))};
+                   rmse(denoised, accumulate(scene, 512, 100000, strafingCamera(31)))};
   };
   // A 0.8 m light 1.5 m above the slab: its penumbra on the floor is about 6 px wide.
   const Strafed wide = strafe(sphereLight(0.4f));
