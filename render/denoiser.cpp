@@ -157,7 +157,7 @@ std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity
 }
 
 void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout,
-                               NeighbourhoodReads reads) {
+                               NeighbourhoodReads reads, bool greyVisibility) {
   const bool tile = reads == NeighbourhoodReads::Tile ||
                     (reads == NeighbourhoodReads::Auto && !context_.isCpuDevice());
   const std::string group = std::to_string(groupSize_);
@@ -165,7 +165,9 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
       context_, layout,
       compiler
           .compile("denoise_temporal.comp",
-                   {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"}, {"DENOISER_GROUP_SIZE", group}})
+                   {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
+                    {"DENOISER_GROUP_SIZE", group},
+                    {"GREY_VISIBILITY", greyVisibility ? "1" : "0"}})
           .spirv,
       "denoise temporal");
   atrous_ = createComputePipeline(

@@ -27,6 +27,10 @@ enum class DenoiserImage {
 // How the temporal pass reads each pixel's 5x5 neighbourhood (RendererOptions).
 enum class NeighbourhoodReads { Auto, Tile, PerPixel };
 
+// Which channels of visibility the temporal pass's neighbourhood statistics keep
+// (RendererOptions): Auto keeps one where the visibility has no colour, Rgb all three always.
+enum class VisibilityChannels { Auto, Rgb };
+
 class Denoiser {
  public:
   // Its passes run in square work-groups, and the a-trous iterations only on those with
@@ -48,7 +52,9 @@ class Denoiser {
   std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
 
   // `reads`: Auto picks the shared-memory tile on GPUs and per-pixel reads on CPU drivers.
-  void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout, NeighbourhoodReads reads);
+  // `greyVisibility`: the soft lights' visibility has no colour (no glass on a shadow ray's way).
+  void createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout, NeighbourhoodReads reads,
+                       bool greyVisibility);
 
   // Temporal pass then `iterations` a-trous passes over the top-left width x height of the
   // images (the picture's size); the caller has ordered ray-gen's writes before and orders the

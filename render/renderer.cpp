@@ -561,7 +561,12 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
       context_, pipelineLayout_,
       compiler.compile("tonemap.comp", {{"SOFT_SHADOWS", features.softShadows ? "1" : "0"}}).spirv,
       "tonemap");
-  if (denoiser_) denoiser_->createPipelines(compiler, pipelineLayout_, options_.neighbourhoodReads);
+  // Without glass every shadow ray reports 0 or 1 in all three channels alike.
+  const bool greyVisibility =
+      !features.glass && options_.visibilityChannels == VisibilityChannels::Auto;
+  if (denoiser_)
+    denoiser_->createPipelines(compiler, pipelineLayout_, options_.neighbourhoodReads,
+                               greyVisibility);
   if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_);
 }
 

@@ -46,6 +46,9 @@ struct RendererOptions {
   // work-group tile in shared memory (Tile) or from the image (PerPixel). The results are the
   // same; Auto takes the tile on GPUs and the image reads on CPU drivers (faster there).
   NeighbourhoodReads neighbourhoodReads = NeighbourhoodReads::Auto;
+  // Which channels of visibility the temporal pass's statistics keep: Auto one in a level
+  // without glass (its visibility is grey), where the results are the same as with Rgb's three.
+  VisibilityChannels visibilityChannels = VisibilityChannels::Auto;
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;
   // Route light by flat mirrors onto surfaces and sensors where the scene can (false: direct

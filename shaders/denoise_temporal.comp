@@ -11,6 +11,11 @@
 #ifndef COLUMN_PIXELS
 #define COLUMN_PIXELS 2
 #endif
+// 1 where the soft lights' visibility has no colour (the renderer defines it for a level
+// without glass, whose shadow rays each report 0 or 1 in all three channels alike).
+#ifndef GREY_VISIBILITY
+#define GREY_VISIBILITY 0
+#endif
 #if NEIGHBOURHOOD_TILE
 #define DENOISER_GROUP_ROWS DENOISER_GROUP_SIZE
 #else
@@ -36,10 +41,21 @@ const float CLAMP_MARGIN = 0.1;
 const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
 const float MOTION_GRID = 256.0;   // the reprojection rounds to 1/256 pixel
 
+// The neighbourhood's statistics are kept per channel of visibility: one where it is grey, which
+// gives the same bits as three alike and on lavapipe made this pass a quarter faster on 02 and
+// 06 (docs/PERFORMANCE.md, session 23).
+#if GREY_VISIBILITY
+#define Visibility float
+Visibility visibilityOf(vec4 sampled) { return sampled.r; }
+#else
+#define Visibility vec3
+Visibility visibilityOf(vec4 sampled) { return sampled.rgb; }
+#endif
+
 // The statistics of a pixel's neighbourhood the clamp and the moments need. They are summed row
 // by row, then the rows in order, the same way on both paths below, so both give the same bits.
 struct Neighbourhood {
-  vec3 sum, sumSquares, low, high;
+  Visibility sum, sumSquares, low, high;
   float count;
   // The penumbra's width here: the mean over the neighbourhood's samples that met a caster
   // (a sample that reached the light says nothing of it).
@@ -47,7 +63,8 @@ struct Neighbourhood {
 };
 
 Neighbourhood emptyNeighbourhood() {
-  return Neighbourhood(vec3(0.0), vec3(0.0), vec3(1.0), vec3(0.0), 0.0, 0.0, 0.0);
+  return Neighbourhood(Visibility(0.0), Visibility(0.0), Visibility(1.0), Visibility(0.0), 0.0,
+                       0.0, 0.0);
 }
 
 void addSample(inout Neighbourhood n, vec4 sampled) {
@@ -56,10 +73,11 @@ void addSample(inout Neighbourhood n, vec4 sampled) {
     n.penumbraSum += sampled.a;
     n.penumbraSamples += 1.0;
   }
-  n.sum += sampled.rgb;
-  n.sumSquares += sampled.rgb * sampled.rgb;
-  n.low = min(n.low, sampled.rgb);
-  n.high = max(n.high, sampled.rgb);
+  Visibility visibility = visibilityOf(sampled);
+  n.sum += visibility;
+  n.sumSquares += visibility * visibility;
+  n.low = min(n.low, visibility);
+  n.high = max(n.high, visibility);
   n.count += 1.0;
 }
 
@@ -148,9 +166,9 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   bool reference = frame.denoise.y != 0u;
   vec4 surface = unpackSurface(packedSurface.xy);
   uint instance = packedSurface.z;
-  vec3 low = n.low, high = n.high;
-  vec3 mean = n.sum / n.count;
-  vec3 sigma = sqrt(max(n.sumSquares / n.count - mean * mean, vec3(0.0)));
+  vec3 low = vec3(n.low), high = vec3(n.high);
+  vec3 mean = vec3(n.sum / n.count);
+  vec3 sigma = sqrt(max(vec3(n.sumSquares / n.count) - mean * mean, vec3(0.0)));
 
   float penumbra = n.penumbraSamples > 0.0 ? n.penumbraSum / n.penumbraSamples : -1.0;
   vec3 history = current;

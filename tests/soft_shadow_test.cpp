@@ -568,6 +568,40 @@ TEST_F(SoftShadowTest, the_shared_memory_tile_and_per_pixel_reads_denoise_alike)
   EXPECT_GT(penumbra, 20u);  // the comparison covers filtered pixels, not only uniform ones
 }
 
+TEST_F(SoftShadowTest, grey_visibility_keeps_one_channel_of_statistics_with_the_same_results) {
+  // Without glass the soft lights' visibility is grey, and the temporal pass keeps its
+  // neighbourhood statistics in one channel instead of three: the frames must come out bit for
+  // bit the same as with three, with a moving view, on both ways of reading the neighbourhood.
+  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
+  const auto render = [&](render::VisibilityChannels channels, render::NeighbourhoodReads reads) {
+    render::RendererOptions options;
+    options.width = 45;
+    options.height = 37;
+    options.visibilityChannels = channels;
+    options.neighbourhoodReads = reads;
+    render::Renderer renderer(context(), compiler(), scene, options);
+    for (uint32_t frame = 0; frame < 6; ++frame) {
+      scene::FrameDesc desc = frameAt(frame);
+      desc.camera.position.z += 0.02f * float(frame);
+      renderer.renderFrame(desc);
+    }
+    return std::make_pair(renderer.readDenoiser(DenoiserImage::Denoised),
+                          renderer.readDenoiser(DenoiserImage::Moments));
+  };
+  for (const auto reads : {render::NeighbourhoodReads::Tile, render::NeighbourhoodReads::PerPixel}) {
+    const auto grey = render(render::VisibilityChannels::Auto, reads);
+    const auto rgb = render(render::VisibilityChannels::Rgb, reads);
+    ASSERT_EQ(grey.first.size(), size_t(45 * 37));
+    size_t differing = 0, penumbra = 0;
+    for (size_t i = 0; i < grey.first.size(); ++i) {
+      if (grey.first[i] != rgb.first[i] || grey.second[i] != rgb.second[i]) ++differing;
+      if (rgb.first[i].r > 0.0f && rgb.first[i].r < 1.0f) ++penumbra;
+    }
+    EXPECT_EQ(differing, 0u) << (reads == render::NeighbourhoodReads::Tile ? "tile" : "per pixel");
+    EXPECT_GT(penumbra, 20u);
+  }
+}
+
 TEST_F(SoftShadowTest, a_still_view_keeps_its_whole_history_while_the_picture_is_upscaled) {
   // Temporal upscaling moves the camera rays within their pixels every frame. A still view's
   // sample continues the history of the pixel it falls in, which grows to its cap as it does
