@@ -164,10 +164,9 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
   temporal_ = createComputePipeline(
       context_, layout,
       compiler
-          .compile("denoise_temporal.comp",
-                   {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
-                    {"DENOISER_GROUP_SIZE", group},
-                    {"GREY_VISIBILITY", greyVisibility ? "1" : "0"}})
+          .compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
+                                             {"DENOISER_GROUP_SIZE", group},
+                                             {"GREY_VISIBILITY", greyVisibility ? "1" : "0"}})
           .spirv,
       "denoise temporal");
   atrous_ = createComputePipeline(
