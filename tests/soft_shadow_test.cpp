@@ -588,7 +588,8 @@ TEST_F(SoftShadowTest, grey_visibility_keeps_one_channel_of_statistics_with_the_
     return std::make_pair(renderer.readDenoiser(DenoiserImage::Denoised),
                           renderer.readDenoiser(DenoiserImage::Moments));
   };
-  for (const auto reads : {render::NeighbourhoodReads::Tile, render::NeighbourhoodReads::PerPixel}) {
+  for (const auto reads :
+       {render::NeighbourhoodReads::Tile, render::NeighbourhoodReads::PerPixel}) {
     const auto grey = render(render::VisibilityChannels::Auto, reads);
     const auto rgb = render(render::VisibilityChannels::Rgb, reads);
     ASSERT_EQ(grey.first.size(), size_t(45 * 37));
