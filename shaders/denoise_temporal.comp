@@ -94,20 +94,29 @@ Neighbourhood merged(Neighbourhood a, Neighbourhood b) {
 // than the reads it saves, so the CPU build slides each neighbourhood down a column instead.
 const ivec2 TILE_SIZE = ivec2(gl_WorkGroupSize.xy) + 2 * NEIGHBOURHOOD_RADIUS;
 const int TILE_SAMPLES = TILE_SIZE.x * TILE_SIZE.y;
+// A grey sample keeps its visibility and penumbra width only.
+#if GREY_VISIBILITY
+shared vec2 tileSamples[TILE_SAMPLES];
+vec2 tileSample(vec4 sampled) { return sampled.ra; }
+vec4 fromTile(vec2 kept) { return kept.xxxy; }
+#else
 shared vec4 tileSamples[TILE_SAMPLES];
+vec4 tileSample(vec4 sampled) { return sampled; }
+vec4 fromTile(vec4 kept) { return kept; }
+#endif
 
 void loadTile() {
   ivec2 tileOrigin = ivec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy) - NEIGHBOURHOOD_RADIUS;
   uint groupInvocations = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
   for (uint i = gl_LocalInvocationIndex; i < uint(TILE_SAMPLES); i += groupInvocations) {
     ivec2 at = tileOrigin + ivec2(int(i) % TILE_SIZE.x, int(i) / TILE_SIZE.x);
-    tileSamples[i] = insideImage(at) ? rawSample(at) : vec4(OUTSIDE_IMAGE);
+    tileSamples[i] = tileSample(insideImage(at) ? rawSample(at) : vec4(OUTSIDE_IMAGE));
   }
 }
 
 vec4 neighbourSample(ivec2 offset) {
   ivec2 at = ivec2(gl_LocalInvocationID.xy) + NEIGHBOURHOOD_RADIUS + offset;
-  return tileSamples[at.y * TILE_SIZE.x + at.x];
+  return fromTile(tileSamples[at.y * TILE_SIZE.x + at.x]);
 }
 
 Neighbourhood pixelNeighbourhood() {
