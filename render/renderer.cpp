@@ -212,6 +212,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     currentTransforms_.push_back(instance.objectToWorld);
     historyTransforms_.push_back(instance.objectToWorld);
     instanceVisible_.push_back(true);
+    instanceGlow_.push_back(0.0f);
     triangleCount_ += range.indexCount / 3;
   }
   auto textureSlot = [&](int32_t index) -> uint32_t {
@@ -581,6 +582,7 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
 // reprojects moving objects; identity again once they stop.
 void Renderer::writeInstanceMotion(bool fullFrame) {
   if (!pendingTransforms_.empty()) {
+    sceneChanged_ = sceneChanged_ || pendingTransforms_ != currentTransforms_;
     currentTransforms_ = pendingTransforms_;
     pendingTransforms_.clear();
     tlasStale_ = true;
@@ -723,6 +725,7 @@ void Renderer::writeLightRoutes() {
                                  return std::memcmp(&a, &b, sizeof a) == 0;
                                });
   if (same) return;
+  sceneChanged_ = true;
   routes_ = std::move(routes);
   const gpu::LightRoutesHeader header{glm::uvec4(routes_.size(), 0, 0, 0)};
   lightRoutes_.write(&header, sizeof header);
@@ -737,13 +740,18 @@ void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
   const auto glassMember = std::find(glassMembers_.begin(), glassMembers_.end(), instance);
   if (glassMember != glassMembers_.end())
     glassLevel_->setVisible(uint32_t(glassMember - glassMembers_.begin()), visible);
+  if (instanceVisible_[instance] == visible) return;
   instanceVisible_[instance] = visible;
   tlasStale_ = true;
+  sceneChanged_ = true;
 }
 
 void Renderer::setInstanceGlow(uint32_t instance, float glow) {
   if (instance >= topLevel_->instanceCount())
     throw RenderError("setInstanceGlow: no such instance");
+  if (instanceGlow_[instance] == glow) return;
+  instanceGlow_[instance] = glow;
+  sceneChanged_ = true;
   const uint32_t bits = std::bit_cast<uint32_t>(glow);
   instances_.write(&bits, sizeof bits,
                    instance * sizeof(gpu::GpuInstance) + offsetof(gpu::GpuInstance, geometry) +
@@ -753,12 +761,18 @@ void Renderer::setInstanceGlow(uint32_t instance, float glow) {
 void Renderer::setLightTint(uint32_t light, const glm::vec3& tint) {
   if (light >= gpuLights_.size()) throw RenderError("setLightTint: no such light");
   const glm::vec3 radiance = lightRadiances_[light] * tint;
+  if (glm::vec3(gpuLights_[light].radianceRadius) == radiance) return;
+  sceneChanged_ = true;
   gpuLights_[light].radianceRadius = glm::vec4(radiance, gpuLights_[light].radianceRadius.w);
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
 
 void Renderer::setLightPose(uint32_t light, const glm::vec3& position, const glm::vec3& direction) {
   if (light >= gpuLights_.size()) throw RenderError("setLightPose: no such light");
+  const bool turned = glm::length(direction) > 0.0f &&
+                      glm::vec3(gpuLights_[light].directionEnabled) != glm::normalize(direction);
+  if (lightPositions_[light] == position && !turned) return;
+  sceneChanged_ = true;
   lightPositions_[light] = position;
   const glm::vec3 origin = renderOrigin_ ? toRenderSpace(position, *renderOrigin_) : position;
   gpuLights_[light].positionType = glm::vec4(origin, gpuLights_[light].positionType.w);
@@ -771,6 +785,8 @@ void Renderer::setLightPose(uint32_t light, const glm::vec3& position, const glm
 
 void Renderer::setLightEnabled(uint32_t light, bool enabled) {
   if (light >= gpuLights_.size()) throw RenderError("setLightEnabled: no such light");
+  if ((gpuLights_[light].directionEnabled.w != 0.0f) == enabled) return;
+  sceneChanged_ = true;
   gpuLights_[light].directionEnabled.w = enabled ? 1.0f : 0.0f;
   lights_.write(&gpuLights_[light], sizeof(gpu::GpuLight), light * sizeof(gpu::GpuLight));
 }
@@ -830,6 +846,20 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   } else {
     const glm::vec2 jitter = upscaler_ ? TemporalUpscaler::jitter(jitterIndex_++) : frame.jitter;
     uniforms.upscale = glm::vec4(jitter, float(outputWidth()), float(outputHeight()));
+  }
+  if (!probeOnly) {
+    // The camera in world space (its origin and basis), the picture and the exposure as the last
+    // full frame's, and no instance or light set to something else since.
+    const bool steady = !sceneChanged_ && !reset && origin == previousOrigin &&
+                        uniforms.cameraRight == previous.cameraRight &&
+                        uniforms.cameraUp == previous.cameraUp &&
+                        uniforms.cameraForward == previous.cameraForward &&
+                        uniforms.sizeFrameLights.x == previous.sizeFrameLights.x &&
+                        uniforms.sizeFrameLights.y == previous.sizeFrameLights.y &&
+                        uniforms.exposureTonemap == previous.exposureTonemap;
+    steadyFrames_ = steady ? steadyFrames_ + 1 : 0;
+    sceneChanged_ = false;
+    uniforms.steadyFrames = glm::uvec4(steadyFrames_, 0u, 0u, 0u);
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one

@@ -32,6 +32,12 @@ layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba32ui) uniform readonly ui
 // The still range is widened by this share of its width on each side (03 Glass and Mirrors,
 // static after 16 frames: 0.02195 without, 0.02166 with).
 const float kStillRangeMargin = 0.25;
+// Once the scene has held this many full frames (FrameUniforms::steadyFrames: the camera still,
+// no instance or light changed), the history is not clamped at all: nothing it holds can be
+// stale, and any range of this frame's samples erases details thinner than their spacing that
+// the history has gathered. Until then the clamp removes what a change made stale, and the
+// soft-shadow denoiser's history (its own temporal pass) settles.
+const uint kSteadyFramesUnclamped = UPSCALE_STEADY_FRAMES_UNCLAMPED;
 
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
 // smooth bump about a pixel wide, like the box filter of a supersampled reference.
@@ -116,7 +122,8 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
                      frame.previousCameraForward.xyz == frame.cameraForward.xyz;
-  if (cameraStill && !instanceMoved(seenInstance)) {
+  bool unclamped = frame.steadyFrames.x >= kSteadyFramesUnclamped;
+  if (!unclamped && cameraStill && !instanceMoved(seenInstance)) {
     // The four samples around the pixel are in the range already. The 3x3 is centred on the
     // nearest of them, so its other five lie in the column and the row just past the four on
     // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
@@ -161,7 +168,7 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
         taps += w;
       }
       if (taps > 1.0e-3) {
-        history = clamp(sum.rgb / taps, low, high);
+        history = unclamped ? sum.rgb / taps : clamp(sum.rgb / taps, low, high);
         historyWeight = sum.a / taps;
       }
     }

@@ -181,9 +181,11 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_is_no_worse_than_the_same_view_held_
   const double stillError = render::rootMeanSquareError(expected, green(still->pixels()));
   std::printf("after %u frames: strafing RMSE %.5f, held still %.5f (%.2fx)\n", kFrames,
               movingError, stillError, movingError / stillError);
-  // Issue 20 asks for 1.5x. Reprojecting with the nearest-in-depth sample's motion keeps it
-  // below the still view's (0.90x); with the nearest sample's it was 1.08x.
-  EXPECT_LE(movingError, stillError);
+  // Issue 20 asks for 1.5x. Reprojecting with the nearest-in-depth sample's motion kept it below
+  // the still view's clamped history (0.90x; with the nearest sample's motion 1.08x). The still
+  // view's history now goes unclamped once the scene has held 8 frames, which lowered its error
+  // 0.00161 -> 0.00112 (the strafing view's is 0.00145 as before): 1.30x.
+  EXPECT_LE(movingError, 1.5 * stillError);
 }
 
 TEST_F(TemporalUpscaleTest, a_still_view_holds_steady_once_converged) {
@@ -203,6 +205,86 @@ TEST_F(TemporalUpscaleTest, a_still_view_holds_steady_once_converged) {
   }
   std::printf("largest change between consecutive frames over the last 16: RMSE %.5f\n", largest);
   EXPECT_LT(largest, 0.002);  // 0.00062 as it is; 0.00479 with the history held to 32 frames
+}
+
+TEST_F(TemporalUpscaleTest,
+       the_scene_counts_as_steady_until_the_camera_an_instance_or_a_light_changes) {
+  // Setting what is already there changes nothing; every other value restarts the count, and a
+  // probe frame neither counts nor restarts it.
+  auto renderer = upscaler(boxScene(0.0f));
+  uint32_t frame = 0;
+  scene::FrameDesc desc = frameAt(0);
+  auto steadyAfterFrame = [&] {
+    desc.frameIndex = frame++;
+    renderer->renderFrame(desc, false);
+    return renderer->steadyFrames();
+  };
+  EXPECT_EQ(steadyAfterFrame(), 0u);  // the first frame has none before it
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  EXPECT_EQ(steadyAfterFrame(), 2u);
+  renderer->renderProbeFrame(desc);
+  EXPECT_EQ(steadyAfterFrame(), 3u);
+  renderer->setInstanceGlow(1, 0.0f);
+  EXPECT_EQ(steadyAfterFrame(), 4u);
+  renderer->setInstanceGlow(1, 0.5f);
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  renderer->setLightEnabled(0, true);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  renderer->setLightEnabled(0, false);
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  renderer->setLightTint(0, glm::vec3(1.0f));
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  renderer->setLightTint(0, glm::vec3(1.0f, 0.2f, 0.2f));
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  renderer->setLightPose(0, glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f));
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  renderer->setLightPose(0, glm::vec3(0.5f, 2.0f, 0.0f), glm::vec3(0.0f));
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  moveBox(*renderer, 0.0f);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  moveBox(*renderer, 0.1f);
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  renderer->setInstanceVisible(1, true);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  renderer->setInstanceVisible(1, false);
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  desc.camera.yawDegrees += 1.0f;
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  desc.exposure = 2.0f;
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  renderer->setPictureSize(kRenderWidth / 2, kRenderHeight / 2);
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  desc.resetHistory = true;
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+}
+
+TEST_F(TemporalUpscaleTest, a_still_view_shows_a_change_of_the_scene_as_a_fresh_view_does) {
+  // 40 still frames, the history unclamped since the scene has held, then the light on the
+  // wall goes out: the frames after the change clamp again, so the lit wall does not linger.
+  constexpr uint32_t kAfter = 2 * UPSCALE_STEADY_FRAMES_UNCLAMPED;
+  auto renderer = upscaler(boxScene(0.0f));
+  for (uint32_t frame = 0; frame < 40; ++frame) renderer->renderFrame(frameAt(frame));
+  EXPECT_GE(renderer->steadyFrames(), UPSCALE_STEADY_FRAMES_UNCLAMPED);
+  const std::vector<float> lit = green(renderer->pixels());
+  renderer->setLightEnabled(0, false);
+  for (uint32_t frame = 40; frame < 40 + kAfter; ++frame) renderer->renderFrame(frameAt(frame));
+  auto fresh = upscaler(boxScene(0.0f));
+  fresh->setLightEnabled(0, false);
+  for (uint32_t frame = 0; frame < 40 + kAfter; ++frame) fresh->renderFrame(frameAt(frame));
+  const std::vector<float> expected = green(fresh->pixels());
+  const double change = render::rootMeanSquareError(expected, lit);
+  const double left = render::rootMeanSquareError(expected, green(renderer->pixels()));
+  std::printf(
+      "the light going out changed the picture by RMSE %.5f; %u frames later %.5f of it "
+      "is left\n",
+      change, kAfter, left);
+  // 0.00491 of 0.03638 is left, as much as when every still frame clamped (the pixels along the
+  // box's edges hold a mix of box and lit wall that the new range still takes in); 0.02596 with
+  // the change not counted (a mutation run: the history stayed unclamped).
+  EXPECT_GT(change, 0.03);
+  EXPECT_LT(left, 0.25 * change);
 }
 
 TEST_F(TemporalUpscaleTest, a_disoccluded_region_is_within_the_static_error_after_8_frames) {
@@ -234,8 +316,10 @@ TEST_F(TemporalUpscaleTest, a_disoccluded_region_is_within_the_static_error_afte
 TEST_F(TemporalUpscaleTest, the_fragment_and_compute_resolves_give_the_same_pictures) {
   // CPU drivers resolve in a fragment shader writing colour attachments, GPUs in a compute
   // shader storing to images. The same frames must come out byte for byte the same, with the
-  // box and the camera moving, at an output size (3x, 96x54) that leaves partial work-groups.
-  constexpr uint32_t kWidth = 32, kHeight = 18, kFrames = 12;
+  // box and the camera moving, then both still long enough for the history to go unclamped, at
+  // an output size (3x, 96x54) that leaves partial work-groups.
+  constexpr uint32_t kMovingFrames = 12, kFrames = kMovingFrames + 12;
+  constexpr uint32_t kWidth = 32, kHeight = 18;
   const auto render = [&](render::ResolveWrites writes) {
     render::RendererOptions options;
     options.width = kWidth;
@@ -246,12 +330,14 @@ TEST_F(TemporalUpscaleTest, the_fragment_and_compute_resolves_give_the_same_pict
     render::Renderer renderer(context(), compiler(), boxScene(-0.6f), options);
     std::vector<std::vector<uint8_t>> frames;
     for (uint32_t frame = 0; frame < kFrames; ++frame) {
-      moveBox(renderer, -0.6f + 0.08f * float(frame));
+      const uint32_t moved = std::min(frame, kMovingFrames - 1);
+      moveBox(renderer, -0.6f + 0.08f * float(moved));
       scene::FrameDesc desc = frameAt(frame);
-      desc.camera.position.x = frame < kFrames / 2 ? 0.0f : 0.03f * float(frame);
+      desc.camera.position.x = moved < kMovingFrames / 2 ? 0.0f : 0.03f * float(moved);
       renderer.renderFrame(desc);
       frames.push_back(renderer.pixels());
     }
+    EXPECT_GE(renderer.steadyFrames(), UPSCALE_STEADY_FRAMES_UNCLAMPED + 2);
     return frames;
   };
   const auto attachments = render(render::ResolveWrites::Attachments);
