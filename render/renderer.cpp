@@ -36,6 +36,23 @@ static_assert(scene::kTextureRoles == TEXTURE_ROLES &&
                   uint32_t(scene::TextureRole::BaseColor) == TEXTURE_BASE_COLOR,
               "texture roles match shaders");
 
+// How far a transform's elements may stray (metres, or the rotation and scale's plain numbers)
+// from where the instance was when the scene last changed, and the scene still count as steady:
+// play's player body, resting on the floor, lands 0 and 7.5e-9 m high in turn, tick after tick.
+constexpr float kSteadyTransformTolerance = 1.0e-5f;
+
+bool withinSteadyTolerance(const std::vector<glm::mat4>& transforms,
+                           const std::vector<glm::mat4>& reference) {
+  for (size_t i = 0; i < transforms.size(); ++i) {
+    for (int column = 0; column < 4; ++column) {
+      const glm::vec4 difference = glm::abs(transforms[i][column] - reference[i][column]);
+      if (glm::any(glm::greaterThan(difference, glm::vec4(kSteadyTransformTolerance))))
+        return false;
+    }
+  }
+  return true;
+}
+
 constexpr VkShaderStageFlags kRayStages =
     VK_SHADER_STAGE_RAYGEN_BIT_KHR | VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR |
     VK_SHADER_STAGE_MISS_BIT_KHR | VK_SHADER_STAGE_ANY_HIT_BIT_KHR;
@@ -211,6 +228,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
                             {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
     currentTransforms_.push_back(instance.objectToWorld);
     historyTransforms_.push_back(instance.objectToWorld);
+    steadyTransforms_.push_back(instance.objectToWorld);
     instanceVisible_.push_back(true);
     instanceGlow_.push_back(0.0f);
     triangleCount_ += range.indexCount / 3;
@@ -582,7 +600,10 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
 // reprojects moving objects; identity again once they stop.
 void Renderer::writeInstanceMotion(bool fullFrame) {
   if (!pendingTransforms_.empty()) {
-    sceneChanged_ = sceneChanged_ || pendingTransforms_ != currentTransforms_;
+    if (!withinSteadyTolerance(pendingTransforms_, steadyTransforms_)) {
+      sceneChanged_ = true;
+      steadyTransforms_ = pendingTransforms_;
+    }
     currentTransforms_ = pendingTransforms_;
     pendingTransforms_.clear();
     tlasStale_ = true;
@@ -736,11 +757,11 @@ void Renderer::writeLightRoutes() {
 void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
   if (instance >= topLevel_->instanceCount())
     throw RenderError("setInstanceVisible: no such instance");
+  if (instanceVisible_[instance] == visible) return;
   topLevel_->setVisible(instance, visible);
   const auto glassMember = std::find(glassMembers_.begin(), glassMembers_.end(), instance);
   if (glassMember != glassMembers_.end())
     glassLevel_->setVisible(uint32_t(glassMember - glassMembers_.begin()), visible);
-  if (instanceVisible_[instance] == visible) return;
   instanceVisible_[instance] = visible;
   tlasStale_ = true;
   sceneChanged_ = true;

@@ -151,10 +151,10 @@ class Renderer {
   // depend on it. The denoiser's and the upscaler's histories carry across a change.
   void setPictureSize(uint32_t width, uint32_t height);
   uint32_t pictureWidth() const { return pictureWidth_; }
+  uint32_t pictureHeight() const { return pictureHeight_; }
   // Full frames in a row, the last one included, that showed the same scene as the one before
   // (FrameUniforms::steadyFrames; 0: the last full frame changed something).
   uint32_t steadyFrames() const { return steadyFrames_; }
-  uint32_t pictureHeight() const { return pictureHeight_; }
   // The size of outputImage(): the output size with temporal upscaling, else the render size.
   uint32_t outputWidth() const { return upscaler_ ? upscaler_->outputWidth() : width(); }
   uint32_t outputHeight() const { return upscaler_ ? upscaler_->outputHeight() : height(); }
@@ -245,9 +245,11 @@ class Renderer {
   std::vector<glm::mat4> historyTransforms_;  // world space, at the last full frame
   bool movedSinceHistory_ = false;            // transforms arrived since the last full frame
   bool instancesMoved_ = false;               // the last full frame's motion was not identity
-  // An instance or a light changed since the last full frame (set only by a different value).
+  // An instance or a light changed since the last full frame (set only by a different value, or
+  // a transform that strayed from steadyTransforms_ by more than a tolerance).
   bool sceneChanged_ = true;
-  uint32_t steadyFrames_ = 0;  // FrameUniforms::steadyFrames of the last full frame
+  std::vector<glm::mat4> steadyTransforms_;  // world space, as the scene last changed them
+  uint32_t steadyFrames_ = 0;                // FrameUniforms::steadyFrames of the last full frame
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;
