@@ -98,6 +98,37 @@ class SoftShadowTest : public test::VulkanTest {
     return frame;
   }
 
+  // The denoised image and the moments after six frames of the slab scene under a 0.4 m sphere
+  // light, the camera moving, at 45x37 (partial work-groups on both edges), with `options`'
+  // denoiser settings: for comparing two ways of computing the same frames.
+  struct DenoisedFrames {
+    std::vector<glm::vec4> denoised, moments;
+  };
+  static DenoisedFrames denoiseMovingSlab(render::RendererOptions options) {
+    options.width = 45;
+    options.height = 37;
+    render::Renderer renderer(context(), compiler(), slabScene(sphereLight(0.4f)), options);
+    for (uint32_t frame = 0; frame < 6; ++frame) {
+      scene::FrameDesc desc = frameAt(frame);
+      desc.camera.position.z += 0.02f * float(frame);
+      renderer.renderFrame(desc);
+    }
+    return {renderer.readDenoiser(DenoiserImage::Denoised),
+            renderer.readDenoiser(DenoiserImage::Moments)};
+  }
+
+  // Expects `a` and `b` the same bit for bit, over a comparison that covers filtered pixels.
+  static void expectSameFrames(const DenoisedFrames& a, const DenoisedFrames& b) {
+    ASSERT_EQ(a.denoised.size(), size_t(45 * 37));
+    size_t differing = 0, penumbra = 0;
+    for (size_t i = 0; i < a.denoised.size(); ++i) {
+      if (a.denoised[i] != b.denoised[i] || a.moments[i] != b.moments[i]) ++differing;
+      if (b.denoised[i].r > 0.0f && b.denoised[i].r < 1.0f) ++penumbra;
+    }
+    EXPECT_EQ(differing, 0u);
+    EXPECT_GT(penumbra, 20u);  // not only uniform pixels
+  }
+
   // Raw visibility averaged over `samples` frames starting at `firstFrame` (no filtering).
   static std::vector<float> accumulate(const scene::SceneDesc& scene, uint32_t samples,
                                        uint32_t firstFrame,
@@ -539,67 +570,24 @@ TEST_F(SoftShadowTest, an_area_light_is_seen_in_a_mirror) {
 
 TEST_F(SoftShadowTest, the_shared_memory_tile_and_per_pixel_reads_denoise_alike) {
   // GPUs read the temporal pass's 5x5 neighbourhoods from a work-group tile, CPU drivers from
-  // the image: the same frames must come out bit for bit the same, at a size that leaves
-  // partial work-groups on both edges, with a moving view.
-  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
-  const auto render = [&](render::NeighbourhoodReads reads) {
-    render::RendererOptions options;
-    options.width = 45;
-    options.height = 37;
-    options.neighbourhoodReads = reads;
-    render::Renderer renderer(context(), compiler(), scene, options);
-    for (uint32_t frame = 0; frame < 6; ++frame) {
-      scene::FrameDesc desc = frameAt(frame);
-      desc.camera.position.z += 0.02f * float(frame);
-      renderer.renderFrame(desc);
-    }
-    return std::make_pair(renderer.readDenoiser(DenoiserImage::Denoised),
-                          renderer.readDenoiser(DenoiserImage::Moments));
-  };
-  const auto tile = render(render::NeighbourhoodReads::Tile);
-  const auto perPixel = render(render::NeighbourhoodReads::PerPixel);
-  ASSERT_EQ(tile.first.size(), size_t(45 * 37));
-  size_t differing = 0, penumbra = 0;
-  for (size_t i = 0; i < tile.first.size(); ++i) {
-    if (tile.first[i] != perPixel.first[i] || tile.second[i] != perPixel.second[i]) ++differing;
-    if (perPixel.first[i].r > 0.0f && perPixel.first[i].r < 1.0f) ++penumbra;
-  }
-  EXPECT_EQ(differing, 0u);
-  EXPECT_GT(penumbra, 20u);  // the comparison covers filtered pixels, not only uniform ones
+  // the image: the same frames must come out bit for bit the same.
+  render::RendererOptions tile, perPixel;
+  tile.neighbourhoodReads = render::NeighbourhoodReads::Tile;
+  perPixel.neighbourhoodReads = render::NeighbourhoodReads::PerPixel;
+  expectSameFrames(denoiseMovingSlab(tile), denoiseMovingSlab(perPixel));
 }
 
 TEST_F(SoftShadowTest, grey_visibility_keeps_one_channel_of_statistics_with_the_same_results) {
   // Without glass the soft lights' visibility is grey, and the temporal pass keeps its
   // neighbourhood statistics in one channel instead of three: the frames must come out bit for
-  // bit the same as with three, with a moving view, on both ways of reading the neighbourhood.
-  const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
-  const auto render = [&](render::VisibilityChannels channels, render::NeighbourhoodReads reads) {
-    render::RendererOptions options;
-    options.width = 45;
-    options.height = 37;
-    options.visibilityChannels = channels;
-    options.neighbourhoodReads = reads;
-    render::Renderer renderer(context(), compiler(), scene, options);
-    for (uint32_t frame = 0; frame < 6; ++frame) {
-      scene::FrameDesc desc = frameAt(frame);
-      desc.camera.position.z += 0.02f * float(frame);
-      renderer.renderFrame(desc);
-    }
-    return std::make_pair(renderer.readDenoiser(DenoiserImage::Denoised),
-                          renderer.readDenoiser(DenoiserImage::Moments));
-  };
+  // bit the same as with three, on both ways of reading the neighbourhood.
   for (const auto reads :
        {render::NeighbourhoodReads::Tile, render::NeighbourhoodReads::PerPixel}) {
-    const auto grey = render(render::VisibilityChannels::Auto, reads);
-    const auto rgb = render(render::VisibilityChannels::Rgb, reads);
-    ASSERT_EQ(grey.first.size(), size_t(45 * 37));
-    size_t differing = 0, penumbra = 0;
-    for (size_t i = 0; i < grey.first.size(); ++i) {
-      if (grey.first[i] != rgb.first[i] || grey.second[i] != rgb.second[i]) ++differing;
-      if (rgb.first[i].r > 0.0f && rgb.first[i].r < 1.0f) ++penumbra;
-    }
-    EXPECT_EQ(differing, 0u) << (reads == render::NeighbourhoodReads::Tile ? "tile" : "per pixel");
-    EXPECT_GT(penumbra, 20u);
+    SCOPED_TRACE(reads == render::NeighbourhoodReads::Tile ? "tile" : "per pixel");
+    render::RendererOptions grey, rgb;
+    grey.neighbourhoodReads = rgb.neighbourhoodReads = reads;
+    rgb.visibilityChannels = render::VisibilityChannels::Rgb;
+    expectSameFrames(denoiseMovingSlab(grey), denoiseMovingSlab(rgb));
   }
 }
 
