@@ -42,8 +42,8 @@ const float OUTSIDE_IMAGE = -1.0;  // a neighbour's sample outside the image
 const float MOTION_GRID = 256.0;   // the reprojection rounds to 1/256 pixel
 
 // The neighbourhood's statistics are kept per channel of visibility: one where it is grey, which
-// gives the same bits as three alike and on lavapipe made this pass a quarter faster on 02 and
-// 06 (docs/PERFORMANCE.md, session 23).
+// gives the same bits as three alike and on lavapipe took 17-28 % off the denoiser's time on 02
+// and 06 (docs/PERFORMANCE.md, session 23).
 #if GREY_VISIBILITY
 #define Visibility float
 Visibility visibilityOf(vec4 sampled) { return sampled.r; }

@@ -150,8 +150,8 @@ struct FrameUniforms {
   uvec4 previousSize;
   // x: full frames in a row, this one included, that showed the same scene as the full frame
   // before: the same camera, picture size and exposure, and no instance or light changed
-  // (0: something did). While it holds, the upscaler stops clamping a still view's history
-  // (temporal_upscale.glsl).
+  // (0: something did). From UPSCALE_STEADY_FRAMES_UNCLAMPED on, the upscaler no longer clamps
+  // the history (temporal_upscale.glsl).
   uvec4 steadyFrames;
 };
 
