@@ -35,7 +35,7 @@ const float kStillRangeMargin = 0.25;
 // Once the scene has held this many full frames (FrameUniforms::steadyFrames: the camera still,
 // no instance or light changed), the history is not clamped at all: nothing it holds can be
 // stale, and any range of this frame's samples erases details thinner than their spacing that
-// the history has gathered. Until then the clamp removes what a change made stale, and the
+// the history has gathered. Nor is the motion read: every point is where it was. Until then the clamp removes what a change made stale, and the
 // soft-shadow denoiser's history (its own temporal pass) settles.
 const uint kSteadyFramesUnclamped = UPSCALE_STEADY_FRAMES_UNCLAMPED;
 
@@ -99,31 +99,39 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
   // the foreground's motion so carries the pixels around its edge, which moves as one piece
   // instead of splitting into the samples' 4-pixel steps.
+  // A steady view (the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED frames: the camera still,
+  // nothing moved) needs no motion: every point is where it was, and the instance a pixel shows
+  // is the one its history shows. Its history is not clamped either (below).
+  bool steady = frame.steadyFrames.x >= kSteadyFramesUnclamped;
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
-  vec4 motion = imageLoad(motionImage, nearest);
-  ivec2 motionSample = nearest;
-  for (int corner = 0; corner < 4; ++corner) {
-    ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
-    if (at == nearest) continue;
-    vec4 candidate = imageLoad(motionImage, at);
-    if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
-      motion = candidate;
-      motionSample = at;
+  vec2 previous = vec2(pixel);
+  bool historyThere = true;  // the point was in front of the previous camera
+  uint seenInstance = 0u;    // a steady view's: its history's, read below
+  if (!steady) {
+    vec4 motion = imageLoad(motionImage, nearest);
+    ivec2 motionSample = nearest;
+    for (int corner = 0; corner < 4; ++corner) {
+      ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+      if (at == nearest) continue;
+      vec4 candidate = imageLoad(motionImage, at);
+      if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
+        motion = candidate;
+        motionSample = at;
+      }
     }
+    seenInstance = uint(motion.w);
+    historyThere = motion.z > 0.0;
+    // On a grid of 1/256 output pixel: a still view's motion, rounding left over from
+    // projecting the sample's point back, becomes exactly 0, and the three history taps of
+    // weight 0 are not read.
+    previous += round((motion.xy - (vec2(motionSample) + jitter)) / scale * kMotionGrid) /
+                kMotionGrid;
   }
-  uint seenInstance = uint(motion.w);
-  // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
-  // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are
-  // not read.
-  vec2 previous =
-      vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale * kMotionGrid) /
-                        kMotionGrid;
   bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
                      frame.previousCameraForward.xyz == frame.cameraForward.xyz;
-  bool unclamped = frame.steadyFrames.x >= kSteadyFramesUnclamped;
-  if (!unclamped && cameraStill && !instanceMoved(seenInstance)) {
+  if (!steady && cameraStill && !instanceMoved(seenInstance)) {
     // The four samples around the pixel are in the range already. The 3x3 is centred on the
     // nearest of them, so its other five lie in the column and the row just past the four on
     // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
@@ -148,9 +156,10 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
                  all(lessThan(previousPixel, outputSize));
   // The history is dropped where it showed a moving instance other than the one seen now: what
   // the mover uncovered (no trail behind it).
-  if (frame.denoise.x == 0u && motion.z > 0.0 && onImage) {
+  if (frame.denoise.x == 0u && historyThere && onImage) {
     uvec4 nearestHistory = imageLoad(historyImage, previousPixel);
     uint shown = nearestHistory.z;
+    if (steady) seenInstance = shown;
     if (shown == seenInstance || !instanceMoved(shown)) {
       // Bilinear over the four history pixels around `previous` that are on the image.
       vec2 from = floor(previous);
@@ -168,7 +177,7 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
         taps += w;
       }
       if (taps > 1.0e-3) {
-        history = unclamped ? sum.rgb / taps : clamp(sum.rgb / taps, low, high);
+        history = steady ? sum.rgb / taps : clamp(sum.rgb / taps, low, high);
         historyWeight = sum.a / taps;
       }
     }
