@@ -59,9 +59,9 @@ struct InterleavedReference {
 };
 
 // The frame bench renders as its `index`th: the level's view, or with --strafe the view
-// strafed 1 cm a frame, back and forth over 32 cm (bench-quality's moving runs go 1 cm a frame).
+// strafed kStrafeStepMetres (1 cm) a frame, as bench-quality's moving runs, back and forth over
+// 32 of them.
 scene::FrameDesc benchFrame(const game::Level& level, const Options& options, uint32_t index) {
-  constexpr float kStrafeStepMetres = 0.01f;
   constexpr uint32_t kStrafeSteps = 32;
   scene::FrameDesc frame = frameFor(level, options, index);
   if (options.strafe) {

@@ -27,7 +27,6 @@ namespace {
 // the reference is independent of them.
 constexpr uint32_t kReferenceFirstFrame = 1u << 20;
 constexpr uint32_t kWarmUpFrame = 1u << 21;  // a sequence index no measured frame uses
-constexpr float kCameraStepMetres = 0.01f;   // the moving camera strafes this much a frame
 
 struct Images {
   std::vector<float> visibility;  // luminance of the visibility the final image used
@@ -59,7 +58,7 @@ Images capture(const render::Renderer& renderer) {
 }
 
 scene::CameraDesc cameraAt(const game::Level& level, uint32_t frame, bool moving) {
-  return moving ? strafed(level.camera, kCameraStepMetres * float(frame)) : level.camera;
+  return moving ? strafed(level.camera, kStrafeStepMetres * float(frame)) : level.camera;
 }
 
 class QualityBench {

@@ -14,6 +14,8 @@ namespace app {
 
 // `camera` moved `metres` to its right (along the ground, by its yaw); negative: to its left.
 scene::CameraDesc strafed(scene::CameraDesc camera, float metres);
+// How far bench-quality's moving camera, and bench's with --strafe, strafes a frame.
+inline constexpr float kStrafeStepMetres = 0.01f;
 
 // Where a camera walking `metres` from the level's camera can go without passing through a
 // wall (a walk into one would measure its inside), by ray casts against the level's geometry:
