@@ -37,17 +37,18 @@ static_assert(scene::kTextureRoles == TEXTURE_ROLES &&
               "texture roles match shaders");
 
 // How far a transform's elements may stray (metres, or the rotation and scale's plain numbers)
-// from where the instance was when the scene last changed, and the scene still count as steady:
-// play's player body, resting on the floor, lands 0 and 7.5e-9 m high in turn, tick after tick.
-constexpr float kSteadyTransformTolerance = 1.0e-5f;
+// from the instance's transform in the TLAS and the instance not count as moved: the TLAS keeps
+// what it has, no motion is written and the scene counts as steady. play's player body, resting
+// on the floor, lands 0 and 7.5e-9 m high in turn, tick after tick; each of those used to update
+// the TLAS and make the denoiser and the upscaler read every instance's motion.
+constexpr float kUnseenTransformChange = 1.0e-5f;
 
-bool withinSteadyTolerance(const std::vector<glm::mat4>& transforms,
-                           const std::vector<glm::mat4>& reference) {
+bool withinUnseenChange(const std::vector<glm::mat4>& transforms,
+                        const std::vector<glm::mat4>& reference) {
   for (size_t i = 0; i < transforms.size(); ++i) {
     for (int column = 0; column < 4; ++column) {
       const glm::vec4 difference = glm::abs(transforms[i][column] - reference[i][column]);
-      if (glm::any(glm::greaterThan(difference, glm::vec4(kSteadyTransformTolerance))))
-        return false;
+      if (glm::any(glm::greaterThan(difference, glm::vec4(kUnseenTransformChange)))) return false;
     }
   }
   return true;
@@ -228,7 +229,6 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
                             {glm::vec4(1, 0, 0, 0), glm::vec4(0, 1, 0, 0), glm::vec4(0, 0, 1, 0)}});
     currentTransforms_.push_back(instance.objectToWorld);
     historyTransforms_.push_back(instance.objectToWorld);
-    steadyTransforms_.push_back(instance.objectToWorld);
     instanceVisible_.push_back(true);
     instanceGlow_.push_back(0.0f);
     triangleCount_ += range.indexCount / 3;
@@ -595,19 +595,19 @@ void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {
   pendingTransforms_.assign(objectToWorld.begin(), objectToWorld.end());
 }
 
-// New transforms go to the TLAS with every frame. A full frame also gets each instance's
+// New transforms go to the TLAS with the next frame, unless none strayed further than
+// kUnseenTransformChange from what the TLAS has. A full frame also gets each instance's
 // previous-from-current transform: what moved since the last full frame, so the denoiser
 // reprojects moving objects; identity again once they stop.
 void Renderer::writeInstanceMotion(bool fullFrame) {
   if (!pendingTransforms_.empty()) {
-    if (!withinSteadyTolerance(pendingTransforms_, steadyTransforms_)) {
+    if (!withinUnseenChange(pendingTransforms_, currentTransforms_)) {
       sceneChanged_ = true;
-      steadyTransforms_ = pendingTransforms_;
+      currentTransforms_ = pendingTransforms_;
+      tlasStale_ = true;
+      movedSinceHistory_ = true;
     }
-    currentTransforms_ = pendingTransforms_;
     pendingTransforms_.clear();
-    tlasStale_ = true;
-    movedSinceHistory_ = true;
   }
   if (!fullFrame || (!movedSinceHistory_ && !instancesMoved_)) return;
   for (size_t i = 0; i < currentTransforms_.size(); ++i) {
@@ -917,6 +917,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
       glassLevel_->recordUpdate(commands, glassTransforms);
     }
     tlasStale_ = false;
+    ++tlasUpdates_;
     memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                   VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR,
                   VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,

@@ -96,7 +96,8 @@ class Renderer {
   // No image changes, and the denoiser's history and motion stay those of the last full frame.
   FrameStats renderProbeFrame(const scene::FrameDesc& frame);
 
-  // New object-to-world transforms, one per scene instance; the next frame updates the TLAS.
+  // New object-to-world transforms, one per scene instance; the next frame updates the TLAS,
+  // unless every element is within 1e-5 (10 µm) of what it holds: so small a change is not drawn.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);
 
   // What the probes measure from the next frame on (replaces the previous request). Exposure
@@ -155,6 +156,9 @@ class Renderer {
   // Full frames in a row, the last one included, that showed the same scene as the one before
   // (FrameUniforms::steadyFrames; 0: the last full frame changed something).
   uint32_t steadyFrames() const { return steadyFrames_; }
+  // How many frames updated the TLAS (new transforms, render origin or visibility) since the
+  // renderer was made.
+  uint64_t tlasUpdates() const { return tlasUpdates_; }
   // The size of outputImage(): the output size with temporal upscaling, else the render size.
   uint32_t outputWidth() const { return upscaler_ ? upscaler_->outputWidth() : width(); }
   uint32_t outputHeight() const { return upscaler_ ? upscaler_->outputHeight() : height(); }
@@ -220,6 +224,7 @@ class Renderer {
   std::vector<uint32_t> glassMembers_;
   std::vector<glm::mat4> pendingTransforms_;  // world space, for the next frame
   bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_
+  uint64_t tlasUpdates_ = 0;
   std::vector<gpu::GpuLight> gpuLights_;   // render space (positions relative to the origin)
   std::vector<glm::vec3> lightPositions_;  // world space
   std::vector<glm::vec3> lightRadiances_;  // as the level made them, before any tint
@@ -246,10 +251,9 @@ class Renderer {
   bool movedSinceHistory_ = false;            // transforms arrived since the last full frame
   bool instancesMoved_ = false;               // the last full frame's motion was not identity
   // An instance or a light changed since the last full frame (set only by a different value, or
-  // a transform that strayed from steadyTransforms_ by more than a tolerance).
+  // a transform that strayed from currentTransforms_ by more than a tolerance).
   bool sceneChanged_ = true;
-  std::vector<glm::mat4> steadyTransforms_;  // world space, as the scene last changed them
-  uint32_t steadyFrames_ = 0;                // FrameUniforms::steadyFrames of the last full frame
+  uint32_t steadyFrames_ = 0;  // FrameUniforms::steadyFrames of the last full frame
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

@@ -245,13 +245,17 @@ TEST_F(TemporalUpscaleTest,
   moveBox(*renderer, 0.1f);
   EXPECT_EQ(steadyAfterFrame(), 0u);
   // A few micrometres off where the last change put it, as a body resting on the floor lands
-  // from tick to tick, is no change; straying further from there is, however slowly.
+  // from tick to tick, is no change, and the TLAS keeps what it has; straying further from
+  // there is, however slowly.
+  const uint64_t updates = renderer->tlasUpdates();
   moveBox(*renderer, 0.1f + 4.0e-6f);
   EXPECT_EQ(steadyAfterFrame(), 1u);
   moveBox(*renderer, 0.1f + 8.0e-6f);
   EXPECT_EQ(steadyAfterFrame(), 2u);
+  EXPECT_EQ(renderer->tlasUpdates(), updates);
   moveBox(*renderer, 0.1f + 1.2e-5f);
   EXPECT_EQ(steadyAfterFrame(), 0u);
+  EXPECT_EQ(renderer->tlasUpdates(), updates + 1);
   renderer->setInstanceVisible(1, true);
   EXPECT_EQ(steadyAfterFrame(), 1u);
   renderer->setInstanceVisible(1, false);
