@@ -65,6 +65,30 @@ bool instanceMoved(uint instancePlusOne) {
          rows[2] != vec4(0.0, 0.0, 1.0, 0.0);
 }
 
+// Adds this frame's weighted samples to the (reprojected, clamped) history and writes the
+// pixel's picture (rgba8, sRGB-encoded) and its history for the next frame.
+void blendWithHistory(vec3 history, float historyWeight, vec3 weighted, float weight,
+                      vec3 bilinear, vec2 scale, uint seenInstance, out vec4 display,
+                      out uvec4 historyNext) {
+  // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral
+  // (pi r^2 / 3 output pixels) over the samples an output pixel gets a frame. A pixel's weight
+  // a frame is that integral times those samples, so while upscaling the cap is that many frames
+  // over their square: 32 frames plainly, 512 at 2x, 8192 at 4x. A still view keeps averaging,
+  // and that is what holds it steady. A pixel gets its weight in lumps, one when a sample lands
+  // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
+  // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
+  // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
+  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
+  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
+  float total = historyWeight + weight;
+  vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
+  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
+  historyNext = uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
+                      seenInstance, 0u);
+  // Quantized with round-to-nearest, as the tonemap does, so the UNORM write is exact.
+  display = vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0);
+}
+
 // The pixel's picture (rgba8, sRGB-encoded) and its history for the next frame (as above).
 void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   ivec2 outputSize = ivec2(frame.upscale.zw);
@@ -94,44 +118,47 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   }
   vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
 
+  // A steady view (the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED frames: the camera still,
+  // nothing moved) needs no motion: every point is where it was, its history is the one pixel
+  // under it, unclamped, and the instance it shows is the one its history shows. (A reset is
+  // never steady; the test costs nothing.)
+  if (frame.steadyFrames.x >= kSteadyFramesUnclamped && frame.denoise.x == 0u) {
+    uvec4 texel = imageLoad(historyImage, pixel);
+    vec4 history = historyColourAndWeight(texel);
+    blendWithHistory(history.rgb, history.a, weighted, weight, bilinear, scale, texel.z, display,
+                     historyNext);
+    return;
+  }
+
   // Where this pixel's point was in the previous frame, in output pixels: the motion (render
   // pixels, without this frame's jitter) of whichever of the four samples around it is nearest
   // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
   // the foreground's motion so carries the pixels around its edge, which moves as one piece
   // instead of splitting into the samples' 4-pixel steps.
-  // A steady view (the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED frames: the camera still,
-  // nothing moved) needs no motion: every point is where it was, and the instance a pixel shows
-  // is the one its history shows. Its history is not clamped either (below).
-  bool steady = frame.steadyFrames.x >= kSteadyFramesUnclamped;
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
-  vec2 previous = vec2(pixel);
-  bool historyThere = true;  // the point was in front of the previous camera
-  uint seenInstance = 0u;    // a steady view's: its history's, read below
-  if (!steady) {
-    vec4 motion = imageLoad(motionImage, nearest);
-    ivec2 motionSample = nearest;
-    for (int corner = 0; corner < 4; ++corner) {
-      ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
-      if (at == nearest) continue;
-      vec4 candidate = imageLoad(motionImage, at);
-      if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
-        motion = candidate;
-        motionSample = at;
-      }
+  vec4 motion = imageLoad(motionImage, nearest);
+  ivec2 motionSample = nearest;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+    if (at == nearest) continue;
+    vec4 candidate = imageLoad(motionImage, at);
+    if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
+      motion = candidate;
+      motionSample = at;
     }
-    seenInstance = uint(motion.w);
-    historyThere = motion.z > 0.0;
-    // On a grid of 1/256 output pixel: a still view's motion, rounding left over from
-    // projecting the sample's point back, becomes exactly 0, and the three history taps of
-    // weight 0 are not read.
-    previous += round((motion.xy - (vec2(motionSample) + jitter)) / scale * kMotionGrid) /
-                kMotionGrid;
   }
+  uint seenInstance = uint(motion.w);
+  bool historyThere = motion.z > 0.0;  // the point was in front of the previous camera
+  // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
+  // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are not
+  // read.
+  vec2 previous = vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale *
+                                      kMotionGrid) / kMotionGrid;
   bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
                      frame.previousCameraForward.xyz == frame.cameraForward.xyz;
-  if (!steady && cameraStill && !instanceMoved(seenInstance)) {
+  if (cameraStill && !instanceMoved(seenInstance)) {
     // The four samples around the pixel are in the range already. The 3x3 is centred on the
     // nearest of them, so its other five lie in the column and the row just past the four on
     // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
@@ -159,7 +186,6 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   if (frame.denoise.x == 0u && historyThere && onImage) {
     uvec4 nearestHistory = imageLoad(historyImage, previousPixel);
     uint shown = nearestHistory.z;
-    if (steady) seenInstance = shown;
     if (shown == seenInstance || !instanceMoved(shown)) {
       // Bilinear over the four history pixels around `previous` that are on the image.
       vec2 from = floor(previous);
@@ -177,26 +203,11 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
         taps += w;
       }
       if (taps > 1.0e-3) {
-        history = steady ? sum.rgb / taps : clamp(sum.rgb / taps, low, high);
+        history = clamp(sum.rgb / taps, low, high);
         historyWeight = sum.a / taps;
       }
     }
   }
-  // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral
-  // (pi r^2 / 3 output pixels) over the samples an output pixel gets a frame. A pixel's weight
-  // a frame is that integral times those samples, so while upscaling the cap is that many frames
-  // over their square: 32 frames plainly, 512 at 2x, 8192 at 4x. A still view keeps averaging,
-  // and that is what holds it steady. A pixel gets its weight in lumps, one when a sample lands
-  // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
-  // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
-  // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
-  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
-  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
-  float total = historyWeight + weight;
-  vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
-  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
-  historyNext = uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
-                      seenInstance, 0u);
-  // Quantized with round-to-nearest, as the tonemap does, so the UNORM write is exact.
-  display = vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0);
+  blendWithHistory(history, historyWeight, weighted, weight, bilinear, scale, seenInstance, display,
+                   historyNext);
 }
