@@ -880,7 +880,6 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
                         uniforms.exposureTonemap == previous.exposureTonemap;
     steadyFrames_ = steady ? steadyFrames_ + 1 : 0;
     sceneChanged_ = false;
-    uniforms.steadyFrames = glm::uvec4(steadyFrames_, 0u, 0u, 0u);
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one
@@ -966,7 +965,9 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, pipelineLayout_, 0, 1,
                             &descriptorSets_[parity_], 0, nullptr);
     vkCmdDispatch(commands, (pictureWidth_ + 7) / 8, (pictureHeight_ + 7) / 8, 1);
-    if (upscaler_) upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_);
+    if (upscaler_)
+      upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_,
+                        steadyFrames_ >= UPSCALE_STEADY_FRAMES_UNCLAMPED);
   }
   stamp(3);
   const VkImage picture = outputImage();

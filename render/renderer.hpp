@@ -153,8 +153,10 @@ class Renderer {
   void setPictureSize(uint32_t width, uint32_t height);
   uint32_t pictureWidth() const { return pictureWidth_; }
   uint32_t pictureHeight() const { return pictureHeight_; }
-  // Full frames in a row, the last one included, that showed the same scene as the one before
-  // (FrameUniforms::steadyFrames; 0: the last full frame changed something).
+  // Full frames in a row, the last one included, that showed the same scene as the one before:
+  // the same camera, picture size and exposure, no reset, and no instance or light changed (0:
+  // the last full frame changed something). From UPSCALE_STEADY_FRAMES_UNCLAMPED on, the
+  // upscaler resolves with its steady view's pipeline.
   uint32_t steadyFrames() const { return steadyFrames_; }
   // How many frames updated the TLAS (new transforms, render origin or visibility) since the
   // renderer was made.
@@ -253,7 +255,7 @@ class Renderer {
   // An instance or a light changed since the last full frame (set only by a different value, or
   // a transform that strayed from currentTransforms_ by more than a tolerance).
   bool sceneChanged_ = true;
-  uint32_t steadyFrames_ = 0;  // FrameUniforms::steadyFrames of the last full frame
+  uint32_t steadyFrames_ = 0;  // steadyFrames() of the last full frame
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

@@ -22,6 +22,15 @@ float radicalInverse(uint32_t index, uint32_t base) {
   return result;
 }
 
+// The resolve for any view, or for a steady one (STEADY_VIEW: each pixel's history where it is,
+// unclamped; shaders/temporal_upscale.glsl).
+ShaderDefines resolveDefines(bool steadyView) {
+  return {{"STEADY_VIEW", steadyView ? "1" : "0"}};
+}
+const char* resolveName(bool steadyView) {
+  return steadyView ? "temporal upscale, steady view" : "temporal upscale";
+}
+
 }  // namespace
 
 glm::vec2 TemporalUpscaler::jitter(uint32_t index) {
@@ -62,7 +71,8 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
 
 TemporalUpscaler::~TemporalUpscaler() {
   const VkDevice device = context_.device();
-  if (resolve_) vkDestroyPipeline(device, resolve_, nullptr);
+  for (VkPipeline resolve : resolves_)
+    if (resolve) vkDestroyPipeline(device, resolve, nullptr);
   for (VkFramebuffer framebuffer : framebuffers_)
     if (framebuffer) vkDestroyFramebuffer(device, framebuffer, nullptr);
   if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
@@ -130,20 +140,25 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
 }
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
-  if (attachments_) {
-    createGraphicsPipeline(compiler, layout);
-  } else {
-    resolve_ = createComputePipeline(
-        context_, layout, compiler.compile("temporal_upscale.comp").spirv, "temporal upscale");
+  for (const bool steadyView : {false, true}) {
+    resolves_[steadyView] =
+        attachments_
+            ? createGraphicsPipeline(compiler, layout, steadyView)
+            : createComputePipeline(
+                  context_, layout,
+                  compiler.compile("temporal_upscale.comp", resolveDefines(steadyView)).spirv,
+                  resolveName(steadyView));
   }
 }
 
-void TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
+VkPipeline TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler,
+                                                    VkPipelineLayout layout, bool steadyView) {
   const VkDevice device = context_.device();
   const std::array<VkShaderModule, 2> modules = {
       createShaderModule(context_, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
-      createShaderModule(context_, compiler.compile("temporal_upscale.frag").spirv,
-                         "temporal upscale")};
+      createShaderModule(
+          context_, compiler.compile("temporal_upscale.frag", resolveDefines(steadyView)).spirv,
+          resolveName(steadyView))};
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -194,11 +209,13 @@ void TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler, VkPipeli
   info.pColorBlendState = &blend;
   info.layout = layout;
   info.renderPass = renderPass_;
+  VkPipeline pipeline = VK_NULL_HANDLE;
   const VkResult result =
-      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &resolve_);
+      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
   vkCheck(result, "vkCreateGraphicsPipelines");
-  context_.setName(resolve_, VK_OBJECT_TYPE_PIPELINE, "temporal upscale");
+  context_.setName(pipeline, VK_OBJECT_TYPE_PIPELINE, resolveName(steadyView));
+  return pipeline;
 }
 
 VkPipelineStageFlags TemporalUpscaler::pictureStage() const {
@@ -211,7 +228,8 @@ VkAccessFlags TemporalUpscaler::pictureAccess() const {
 }
 
 void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
-                              VkDescriptorSet set, uint32_t parity) const {
+                              VkDescriptorSet set, uint32_t parity, bool steadyView) const {
+  const VkPipeline resolve = resolves_[steadyView];
   if (!attachments_) {
     // The tonemap's picture before the resolve reads it; the earlier frames' accesses of its
     // images are ordered by the renderer's barrier at the frame's start.
@@ -219,7 +237,7 @@ void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0,
                             nullptr);
-    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolve_);
+    vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, resolve);
     vkCmdDispatch(commands, (outputWidth_ + 7) / 8, (outputHeight_ + 7) / 8, 1);
     return;
   }
@@ -241,7 +259,7 @@ void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
   vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0,
                           nullptr);
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, resolve_);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, resolve);
   vkCmdDraw(commands, 3, 1, 0, 0);
   vkCmdEndRenderPass(commands);
 }

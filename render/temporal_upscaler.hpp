@@ -39,9 +39,11 @@ class TemporalUpscaler {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
   // The resolve into frame parity `parity`'s history, ordered after this frame's tonemap and
-  // ray-gen and after the earlier frames' reads of what it overwrites.
+  // ray-gen and after the earlier frames' reads of what it overwrites. A steady view (the scene
+  // held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames) takes the pipeline compiled for it, which
+  // reads each pixel's history where it is, unclamped.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t parity) const;
+              uint32_t parity, bool steadyView) const;
   // The stage and access that write the picture, for what reads it next.
   VkPipelineStageFlags pictureStage() const;
   VkAccessFlags pictureAccess() const;
@@ -55,7 +57,8 @@ class TemporalUpscaler {
   static constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;
   static constexpr VkFormat kHistoryFormat = VK_FORMAT_R32G32B32A32_UINT;
   void createRenderPass();
-  void createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
+  VkPipeline createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
+                                    bool steadyView);
 
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;
@@ -64,7 +67,7 @@ class TemporalUpscaler {
   std::array<std::unique_ptr<StorageImage>, 2> history_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
   std::array<VkFramebuffer, 2> framebuffers_{};  // by the parity of the history written
-  VkPipeline resolve_ = VK_NULL_HANDLE;
+  std::array<VkPipeline, 2> resolves_{};         // [0] any view, [1] a steady view (STEADY_VIEW)
 };
 
 }  // namespace render

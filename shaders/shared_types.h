@@ -76,7 +76,7 @@ using uint = uint32_t;
 // cap comes to this times k^4 frames, so a still view keeps averaging (temporal_upscale.glsl).
 #define UPSCALE_MAX_HISTORY_FRAMES 32.0
 // A still view's history goes unclamped once the scene has held this many full frames
-// (FrameUniforms::steadyFrames, temporal_upscale.glsl).
+// (Renderer::steadyFrames(); the resolve is then compiled with STEADY_VIEW, temporal_upscale.glsl).
 #define UPSCALE_STEADY_FRAMES_UNCLAMPED 8u
 
 #define LIGHT_POINT 0u
@@ -148,11 +148,6 @@ struct FrameUniforms {
   // xy: the size of the previous full frame's picture, whose extent of the images the
   // denoiser's history holds (it differs from this frame's while the render scale changes)
   uvec4 previousSize;
-  // x: full frames in a row, this one included, that showed the same scene as the full frame
-  // before: the same camera, picture size and exposure, and no instance or light changed
-  // (0: something did). From UPSCALE_STEADY_FRAMES_UNCLAMPED on, the upscaler no longer clamps
-  // the history (temporal_upscale.glsl).
-  uvec4 steadyFrames;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials

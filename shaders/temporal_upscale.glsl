@@ -32,12 +32,19 @@ layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba32ui) uniform readonly ui
 // The still range is widened by this share of its width on each side (03 Glass and Mirrors,
 // static after 16 frames: 0.02195 without, 0.02166 with).
 const float kStillRangeMargin = 0.25;
-// Once the scene has held this many full frames (FrameUniforms::steadyFrames: the camera still,
-// no instance or light changed), the history is not clamped at all: nothing it holds can be
+// STEADY_VIEW 1: the pipeline for a steady view, which the renderer takes once the scene has
+// held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames (Renderer::steadyFrames(): the camera still,
+// no instance or light changed). Its history is not clamped at all: nothing it holds can be
 // stale, and any range of this frame's samples erases details thinner than their spacing that
-// the history has gathered. Nor is the motion read: every point is where it was. Until then the clamp removes what a change made stale, and the
-// soft-shadow denoiser's history (its own temporal pass) settles.
-const uint kSteadyFramesUnclamped = UPSCALE_STEADY_FRAMES_UNCLAMPED;
+// the history has gathered. Nor is the motion read: every point is where it was. Until then
+// the clamp removes what a change made stale, and the soft-shadow denoiser's history (its own
+// temporal pass) settles. A pipeline of its own, not a branch on a uniform: on lavapipe at
+// 640x360, an if/else on the count cost a moving view's resolve 0.1-0.3 ms more, and the count
+// tested inside each of the general path's branches left a steady view's 0.4 ms slower than
+// this (docs/PERFORMANCE.md, session 24).
+#ifndef STEADY_VIEW
+#define STEADY_VIEW 0
+#endif
 
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
 // smooth bump about a pixel wide, like the box filter of a supersampled reference.
@@ -65,71 +72,15 @@ bool instanceMoved(uint instancePlusOne) {
          rows[2] != vec4(0.0, 0.0, 1.0, 0.0);
 }
 
-// Adds this frame's weighted samples to the (reprojected, clamped) history and writes the
-// pixel's picture (rgba8, sRGB-encoded) and its history for the next frame.
-void blendWithHistory(vec3 history, float historyWeight, vec3 weighted, float weight,
-                      vec3 bilinear, vec2 scale, uint seenInstance, out vec4 display,
-                      out uvec4 historyNext) {
-  // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral
-  // (pi r^2 / 3 output pixels) over the samples an output pixel gets a frame. A pixel's weight
-  // a frame is that integral times those samples, so while upscaling the cap is that many frames
-  // over their square: 32 frames plainly, 512 at 2x, 8192 at 4x. A still view keeps averaging,
-  // and that is what holds it steady. A pixel gets its weight in lumps, one when a sample lands
-  // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
-  // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
-  // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
-  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
-  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
-  float total = historyWeight + weight;
-  vec3 accumulated = (history * historyWeight + weighted) / max(total, 1.0e-6);
-  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
-  historyNext = uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
-                      seenInstance, 0u);
-  // Quantized with round-to-nearest, as the tonemap does, so the UNORM write is exact.
-  display = vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0);
-}
-
-// The pixel's picture (rgba8, sRGB-encoded) and its history for the next frame (as above).
-void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
+// The history at where this pixel's point was in the previous frame, clamped to the range of
+// this frame's samples around the pixel (`low`, `high`: the four's), as rgb and weight (0: none
+// kept), and the instance the pixel shows (0: none).
+vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, vec3 high,
+                        out uint seenInstance) {
   ivec2 outputSize = ivec2(frame.upscale.zw);
   ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
-  vec2 scale = vec2(renderSize) / vec2(outputSize);  // render pixels per output pixel
+  vec2 scale = vec2(renderSize) / vec2(outputSize);
   vec2 jitter = frame.upscale.xy;
-  // This pixel's centre in render pixels, where this frame's sample i lies at i + jitter.
-  vec2 samplePosition = (vec2(pixel) + 0.5) * scale - 0.5 - jitter;
-
-  // The four samples around this pixel: the bilinear upscale, their range (for the clamp) and
-  // their weighted sum for this pixel.
-  vec2 base = floor(samplePosition);
-  vec2 f = samplePosition - base;
-  vec3 corners[4];
-  vec3 low = vec3(1.0), high = vec3(0.0), weighted = vec3(0.0);
-  float weight = 0.0;
-  for (int corner = 0; corner < 4; ++corner) {
-    ivec2 offset = ivec2(corner & 1, corner >> 1);
-    ivec2 at = clamp(ivec2(base) + offset, ivec2(0), renderSize - 1);
-    vec3 colour = imageLoad(currentImage, at).rgb;
-    corners[corner] = colour;
-    low = min(low, colour);
-    high = max(high, colour);
-    float w = sampleWeight((vec2(offset) - f) / scale);
-    weighted += w * colour;
-    weight += w;
-  }
-  vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
-
-  // A steady view (the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED frames: the camera still,
-  // nothing moved) needs no motion: every point is where it was, its history is the one pixel
-  // under it, unclamped, and the instance it shows is the one its history shows. (A reset is
-  // never steady; the test costs nothing.)
-  if (frame.steadyFrames.x >= kSteadyFramesUnclamped && frame.denoise.x == 0u) {
-    uvec4 texel = imageLoad(historyImage, pixel);
-    vec4 history = historyColourAndWeight(texel);
-    blendWithHistory(history.rgb, history.a, weighted, weight, bilinear, scale, texel.z, display,
-                     historyNext);
-    return;
-  }
-
   // Where this pixel's point was in the previous frame, in output pixels: the motion (render
   // pixels, without this frame's jitter) of whichever of the four samples around it is nearest
   // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
@@ -147,7 +98,7 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
       motionSample = at;
     }
   }
-  uint seenInstance = uint(motion.w);
+  seenInstance = uint(motion.w);
   bool historyThere = motion.z > 0.0;  // the point was in front of the previous camera
   // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
   // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are not
@@ -208,6 +159,64 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
       }
     }
   }
-  blendWithHistory(history, historyWeight, weighted, weight, bilinear, scale, seenInstance, display,
-                   historyNext);
+  return vec4(history, historyWeight);
+}
+
+// The pixel's picture (rgba8, sRGB-encoded) and its history for the next frame (as above).
+void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
+  ivec2 outputSize = ivec2(frame.upscale.zw);
+  ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
+  vec2 scale = vec2(renderSize) / vec2(outputSize);  // render pixels per output pixel
+  vec2 jitter = frame.upscale.xy;
+  // This pixel's centre in render pixels, where this frame's sample i lies at i + jitter.
+  vec2 samplePosition = (vec2(pixel) + 0.5) * scale - 0.5 - jitter;
+
+  // The four samples around this pixel: the bilinear upscale, their range (for the clamp) and
+  // their weighted sum for this pixel.
+  vec2 base = floor(samplePosition);
+  vec2 f = samplePosition - base;
+  vec3 corners[4];
+  vec3 low = vec3(1.0), high = vec3(0.0), weighted = vec3(0.0);
+  float weight = 0.0;
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 offset = ivec2(corner & 1, corner >> 1);
+    ivec2 at = clamp(ivec2(base) + offset, ivec2(0), renderSize - 1);
+    vec3 colour = imageLoad(currentImage, at).rgb;
+    corners[corner] = colour;
+    low = min(low, colour);
+    high = max(high, colour);
+    float w = sampleWeight((vec2(offset) - f) / scale);
+    weighted += w * colour;
+    weight += w;
+  }
+  vec3 bilinear = mix(mix(corners[0], corners[1], f.x), mix(corners[2], corners[3], f.x), f.y);
+
+#if STEADY_VIEW
+  // A steady view needs no motion: every point is where it was, its history is the one pixel
+  // under it, unclamped, and the instance it shows is the one its history shows.
+  uvec4 texel = imageLoad(historyImage, pixel);
+  vec4 history = historyColourAndWeight(texel);
+  uint seenInstance = texel.z;
+#else
+  uint seenInstance;
+  vec4 history = reprojectedHistory(pixel, samplePosition, base, low, high, seenInstance);
+#endif
+  float historyWeight = history.a;
+  // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral
+  // (pi r^2 / 3 output pixels) over the samples an output pixel gets a frame. A pixel's weight
+  // a frame is that integral times those samples, so while upscaling the cap is that many frames
+  // over their square: 32 frames plainly, 512 at 2x, 8192 at 4x. A still view keeps averaging,
+  // and that is what holds it steady. A pixel gets its weight in lumps, one when a sample lands
+  // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
+  // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
+  // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
+  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
+  historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
+  float total = historyWeight + weight;
+  vec3 accumulated = (history.rgb * historyWeight + weighted) / max(total, 1.0e-6);
+  vec3 shown = mix(bilinear, accumulated, min(total / kEnoughWeight, 1.0));
+  historyNext = uvec4(packHalf2x16(accumulated.rg), packHalf2x16(vec2(accumulated.b, total)),
+                      seenInstance, 0u);
+  // Quantized with round-to-nearest, as the tonemap does, so the UNORM write is exact.
+  display = vec4(round(clamp(shown, 0.0, 1.0) * 255.0) / 255.0, 1.0);
 }
