@@ -39,7 +39,7 @@ const float kStillRangeMargin = 0.25;
 // the history has gathered. Nor is the motion read: every point is where it was. Until then
 // the clamp removes what a change made stale, and the soft-shadow denoiser's history (its own
 // temporal pass) settles. A pipeline of its own, not a branch on a uniform: on lavapipe at
-// 640x360, an if/else on the count cost a moving view's resolve 0.1-0.3 ms more, and the count
+// 640x360, an if/else on the count cost a moving view's resolve up to 0.4 ms more, and the count
 // tested inside each of the general path's branches left a steady view's 0.4 ms slower than
 // this (docs/PERFORMANCE.md, session 24).
 #ifndef STEADY_VIEW
