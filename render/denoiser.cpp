@@ -134,7 +134,8 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
 
 Denoiser::~Denoiser() {
   VkDevice device = context_.device();
-  if (temporal_) vkDestroyPipeline(device, temporal_, nullptr);
+  for (VkPipeline temporal : temporal_)
+    if (temporal) vkDestroyPipeline(device, temporal, nullptr);
   if (atrous_) vkDestroyPipeline(device, atrous_, nullptr);
 }
 
@@ -161,14 +162,17 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
   const bool tile = reads == NeighbourhoodReads::Tile ||
                     (reads == NeighbourhoodReads::Auto && !context_.isCpuDevice());
   const std::string group = std::to_string(groupSize_);
-  temporal_ = createComputePipeline(
-      context_, layout,
-      compiler
-          .compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
-                                             {"DENOISER_GROUP_SIZE", group},
-                                             {"GREY_VISIBILITY", greyVisibility ? "1" : "0"}})
-          .spirv,
-      "denoise temporal");
+  for (const bool stillView : {false, true}) {
+    temporal_[stillView] = createComputePipeline(
+        context_, layout,
+        compiler
+            .compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
+                                               {"DENOISER_GROUP_SIZE", group},
+                                               {"GREY_VISIBILITY", greyVisibility ? "1" : "0"},
+                                               {"STILL_VIEW", stillView ? "1" : "0"}})
+            .spirv,
+        stillView ? "denoise temporal, still view" : "denoise temporal");
+  }
   atrous_ = createComputePipeline(
       context_, layout,
       compiler.compile("denoise_atrous.comp", {{"DENOISER_GROUP_SIZE", group}}).spirv,
@@ -176,7 +180,7 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
 }
 
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-                      uint32_t iterations, uint32_t width, uint32_t height) {
+                      uint32_t iterations, uint32_t width, uint32_t height, bool stillView) {
   // The temporal pass lists the work-groups with something to filter, from an empty list.
   memoryBarrier(commands,
                 VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
@@ -188,7 +192,7 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   DenoiserPass pass{0, 0, 0, ++tileStamp_};
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_COMPUTE, layout, 0, 1, &set, 0, nullptr);
-  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_);
+  vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, temporal_[stillView]);
   vkCmdPushConstants(commands, layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof pass, &pass);
   vkCmdDispatch(commands, (width + groupSize_ - 1) / groupSize_,
                 (height + groupSize_ - 1) / groupSize_, 1);

@@ -59,8 +59,11 @@ class Denoiser {
   // Temporal pass then `iterations` a-trous passes over the top-left width x height of the
   // images (the picture's size); the caller has ordered ray-gen's writes before and orders the
   // tonemap's reads after. Each call stamps a new frame.
+  // `stillView`: the camera, the picture's size and every instance are as in the last full frame
+  // (and this is neither a reset nor a reference accumulation); the temporal pass compiled for
+  // that reads each pixel's own history.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t iterations, uint32_t width, uint32_t height);
+              uint32_t iterations, uint32_t width, uint32_t height, bool stillView);
 
   // Test and debugging hooks (they submit and wait).
   std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
@@ -83,7 +86,7 @@ class Denoiser {
   Buffer filterTileList_;
   uint32_t tileStamp_ = 0;  // the images start at 0; the first frame stamps 1
   std::array<std::unique_ptr<StorageImage>, 2> surface_, history_, moments_;
-  VkPipeline temporal_ = VK_NULL_HANDLE;
+  std::array<VkPipeline, 2> temporal_{};  // [0] any view, [1] a still view (STILL_VIEW)
   VkPipeline atrous_ = VK_NULL_HANDLE;
 };
 

@@ -880,6 +880,13 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
                         uniforms.exposureTonemap == previous.exposureTonemap;
     steadyFrames_ = steady ? steadyFrames_ + 1 : 0;
     sceneChanged_ = false;
+    stillView_ = options_.stillViewDenoiser && !reset && !frame.referenceAccumulation &&
+                 !instancesMoved_ && origin == previousOrigin &&
+                 uniforms.cameraRight == previous.cameraRight &&
+                 uniforms.cameraUp == previous.cameraUp &&
+                 uniforms.cameraForward == previous.cameraForward &&
+                 uniforms.sizeFrameLights.x == previous.sizeFrameLights.x &&
+                 uniforms.sizeFrameLights.y == previous.sizeFrameLights.y;
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one
@@ -955,7 +962,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
   stamp(1);
   if (denoiser_ && !probeOnly) {
     denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_,
-                      pictureWidth_, pictureHeight_);
+                      pictureWidth_, pictureHeight_, stillView_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
   }

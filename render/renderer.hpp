@@ -49,6 +49,10 @@ struct RendererOptions {
   // Which channels of visibility the temporal pass's statistics keep: Auto one in a level
   // without glass (its visibility is grey), where the results are the same as with Rgb's three.
   VisibilityChannels visibilityChannels = VisibilityChannels::Auto;
+  // The denoiser's temporal pass compiled for a still view (the camera, picture size and
+  // instances as in the last full frame), which reads each pixel's own history. The results are
+  // the same as the general pass's; false runs the general pass on every frame (to compare).
+  bool stillViewDenoiser = true;
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;
   // Route light by flat mirrors onto surfaces and sensors where the scene can (false: direct
@@ -256,6 +260,9 @@ class Renderer {
   // a transform that strayed from currentTransforms_ by more than a tolerance).
   bool sceneChanged_ = true;
   uint32_t steadyFrames_ = 0;  // steadyFrames() of the last full frame
+  // The last full frame's camera, picture size and instances were the full frame's before it
+  // (and it was neither a reset nor a reference accumulation): the denoiser's still view.
+  bool stillView_ = false;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

@@ -16,6 +16,16 @@
 #ifndef GREY_VISIBILITY
 #define GREY_VISIBILITY 0
 #endif
+// 1 for a still view: the renderer defines it when the camera, the picture's size and every
+// instance are as they were in the last full frame (and for neither a reset nor a reference
+// accumulation). Then every point is where it was, so a pixel's history is its own: one tap of
+// weight 1, the one whose surface ray-gen compared already, and no resampling blur to cap. The
+// same results as the general path (where a still view's motion rounds to exactly 0) with no
+// loop over four taps: on lavapipe the denoiser went 2.5 -> 2.2 ms on 02 and 06 at 320x180
+// (docs/PERFORMANCE.md, session 24).
+#ifndef STILL_VIEW
+#define STILL_VIEW 0
+#endif
 #if NEIGHBOURHOOD_TILE
 #define DENOISER_GROUP_ROWS DENOISER_GROUP_SIZE
 #else
@@ -186,6 +196,15 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   float historyCap = MAX_HISTORY_LENGTH;
   vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
   if (!reset && motion.z >= 0.0) {
+#if STILL_VIEW
+    vec4 ownHistory = imageLoad(historyImage, pixel);  // the estimate and its length
+    vec2 ownMoments = imageLoad(momentsImage, pixel).xy;
+    if (isFinite(ownHistory.rgb) && isFinite(vec3(ownMoments, ownHistory.a))) {
+      history = ownHistory.rgb;
+      moments = ownMoments;
+      historyLength = ownHistory.a;
+    }
+#else
     // On a grid of 1/256 pixel: a still view's motion, rounding left over from projecting the
     // pixel's point back, becomes exactly 0, and the three taps of weight 0 are not read.
     vec2 previous =
@@ -242,6 +261,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
       moments = momentsSum.xy / weightSum;
       historyLength = momentsSum.z / weightSum;
     }
+#endif
   }
   // Where ray-gen expected no history (a reset, or the motion it wrote says "nowhere") it
   // traced DENOISER_FRESH_HISTORY_FRAMES frames' worth of samples, which count as that many.

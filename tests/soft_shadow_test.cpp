@@ -591,6 +591,49 @@ TEST_F(SoftShadowTest, grey_visibility_keeps_one_channel_of_statistics_with_the_
   }
 }
 
+TEST_F(SoftShadowTest,
+       the_temporal_pass_for_a_still_view_gives_the_same_results_as_the_general_one) {
+  // The denoiser's temporal pass for a still view reads each pixel's own history, without the
+  // reprojection and resampling that come to the same there: the denoised image, its moments and
+  // the upscaled picture must come out bit for bit as from the general pass, through a still
+  // view, a light's change, a move of the camera and a still view again.
+  struct Results {
+    std::vector<glm::vec4> denoised, moments;
+    std::vector<uint8_t> pixels;
+  };
+  const auto render = [&](bool stillViewDenoiser) {
+    render::RendererOptions options;
+    options.width = 45;
+    options.height = 37;
+    options.outputWidth = 90;
+    options.outputHeight = 74;
+    options.stillViewDenoiser = stillViewDenoiser;
+    render::Renderer renderer(context(), compiler(), slabScene(sphereLight(0.4f)), options);
+    std::vector<Results> checkpoints;
+    for (uint32_t frame = 0; frame < 30; ++frame) {
+      scene::FrameDesc desc = frameAt(frame);
+      if (frame == 12) renderer.setLightTint(0, glm::vec3(1.0f, 0.6f, 0.6f));
+      if (frame >= 16 && frame < 19) desc.camera.position.z += 0.02f * float(frame - 15);
+      if (frame >= 19) desc.camera.position.z += 0.06f;
+      renderer.renderFrame(desc);
+      if (frame == 11 || frame == 29) {
+        EXPECT_GE(renderer.steadyFrames(), UPSCALE_STEADY_FRAMES_UNCLAMPED);
+        checkpoints.push_back({renderer.readDenoiser(DenoiserImage::Denoised),
+                               renderer.readDenoiser(DenoiserImage::Moments), renderer.pixels()});
+      }
+    }
+    return checkpoints;
+  };
+  const std::vector<Results> still = render(true), general = render(false);
+  ASSERT_EQ(still.size(), 2u);
+  for (size_t checkpoint = 0; checkpoint < still.size(); ++checkpoint) {
+    SCOPED_TRACE(checkpoint == 0 ? "after 12 still frames" : "at the end");
+    expectSameFrames({still[checkpoint].denoised, still[checkpoint].moments},
+                     {general[checkpoint].denoised, general[checkpoint].moments});
+    EXPECT_EQ(still[checkpoint].pixels, general[checkpoint].pixels);
+  }
+}
+
 TEST_F(SoftShadowTest, a_still_view_keeps_its_whole_history_while_the_picture_is_upscaled) {
   // Temporal upscaling moves the camera rays within their pixels every frame. A still view's
   // sample continues the history of the pixel it falls in, which grows to its cap as it does
