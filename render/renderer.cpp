@@ -869,24 +869,21 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
     uniforms.upscale = glm::vec4(jitter, float(outputWidth()), float(outputHeight()));
   }
   if (!probeOnly) {
-    // The camera in world space (its origin and basis), the picture and the exposure as the last
-    // full frame's, and no instance or light set to something else since.
-    const bool steady = !sceneChanged_ && !reset && origin == previousOrigin &&
-                        uniforms.cameraRight == previous.cameraRight &&
-                        uniforms.cameraUp == previous.cameraUp &&
-                        uniforms.cameraForward == previous.cameraForward &&
-                        uniforms.sizeFrameLights.x == previous.sizeFrameLights.x &&
-                        uniforms.sizeFrameLights.y == previous.sizeFrameLights.y &&
-                        uniforms.exposureTonemap == previous.exposureTonemap;
+    // The camera in world space (its origin and basis) and the picture as the last full frame's.
+    const bool viewHeld = !reset && origin == previousOrigin &&
+                          uniforms.cameraRight == previous.cameraRight &&
+                          uniforms.cameraUp == previous.cameraUp &&
+                          uniforms.cameraForward == previous.cameraForward &&
+                          uniforms.sizeFrameLights.x == previous.sizeFrameLights.x &&
+                          uniforms.sizeFrameLights.y == previous.sizeFrameLights.y;
+    // Steady: the exposure too, and no instance or light set to something else since.
+    const bool steady =
+        viewHeld && !sceneChanged_ && uniforms.exposureTonemap == previous.exposureTonemap;
     steadyFrames_ = steady ? steadyFrames_ + 1 : 0;
     sceneChanged_ = false;
-    stillView_ = options_.stillViewDenoiser && !reset && !frame.referenceAccumulation &&
-                 !instancesMoved_ && origin == previousOrigin &&
-                 uniforms.cameraRight == previous.cameraRight &&
-                 uniforms.cameraUp == previous.cameraUp &&
-                 uniforms.cameraForward == previous.cameraForward &&
-                 uniforms.sizeFrameLights.x == previous.sizeFrameLights.x &&
-                 uniforms.sizeFrameLights.y == previous.sizeFrameLights.y;
+    // Still (for the denoiser): no instance moved; lights may have changed.
+    stillView_ =
+        options_.stillViewDenoiser && viewHeld && !instancesMoved_ && !frame.referenceAccumulation;
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one
