@@ -21,8 +21,8 @@
 // accumulation). Then every point is where it was, so a pixel's history is its own: one tap of
 // weight 1, the one whose surface ray-gen compared already, and no resampling blur to cap. The
 // same results as the general path (where a still view's motion rounds to exactly 0) with no
-// loop over four taps: on lavapipe the denoiser went 2.5 -> 2.2 ms on 02 and 06 at 320x180
-// (docs/PERFORMANCE.md, session 24).
+// loop over four taps: on lavapipe at 320x180 the denoiser took 0.16-0.25 ms less on 02, 06
+// and 07 (docs/PERFORMANCE.md, session 24).
 #ifndef STILL_VIEW
 #define STILL_VIEW 0
 #endif
