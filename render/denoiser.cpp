@@ -226,13 +226,15 @@ const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
       return *moments_[parity & 1u];
     case DenoiserImage::SoftLight:
       return *softLight_;
+    case DenoiserImage::History:
+      return *history_[parity & 1u];
   }
   return *filterA_;
 }
 
 std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
                                       uint32_t iterations) const {
-  const bool halfFloats = which != DenoiserImage::SoftLight;
+  const bool halfFloats = which != DenoiserImage::SoftLight && which != DenoiserImage::History;
   std::vector<glm::vec4> texels =
       readTexels(context_, imageFor(which, parity, iterations), halfFloats);
   if (which == DenoiserImage::Moments) {

@@ -22,6 +22,7 @@ enum class DenoiserImage {
   Denoised,       // after the last filter iteration (rgb), variance (a)
   Moments,        // this frame's luminance moments (x, y) and history length (z)
   SoftLight,      // this frame's unshadowed light of the soft lights (rgb), before visibility
+  History,        // the history the next frame continues: visibility (rgb) and length (a)
 };
 
 // How the temporal pass reads each pixel's 5x5 neighbourhood (RendererOptions).

@@ -884,6 +884,8 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
     // Still (for the denoiser): no instance moved; lights may have changed.
     stillView_ =
         options_.stillViewDenoiser && viewHeld && !instancesMoved_ && !frame.referenceAccumulation;
+    // A still view of a steady scene: penumbrae trace more samples, into a longer history.
+    uniforms.previousSize.z = options_.steadyPenumbraSamples && stillView_ && steady ? 1u : 0u;
   }
   frameUniforms_.write(&uniforms, sizeof uniforms);
   if (probeOnly) return;  // the next full frame reprojects from the last full one

@@ -194,10 +194,15 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   vec2 moments = vec2(luminance(current), luminance(current) * luminance(current));
   float historyLength = 0.0;
   float historyCap = MAX_HISTORY_LENGTH;
+  float currentFrames = 1.0;
   vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
   if (!reset && motion.z >= 0.0) {
 #if STILL_VIEW
     vec4 ownHistory = imageLoad(historyImage, pixel);  // the estimate and its length
+    // Ray-gen traced more samples where this says so, and a steady scene's history may be
+    // longer (the flag is only set for a still view, which this pipeline is).
+    if (tracesPenumbraSamples(ownHistory)) currentFrames = float(DENOISER_PENUMBRA_FRAMES);
+    if (frame.previousSize.z != 0u) historyCap = float(DENOISER_STEADY_MAX_HISTORY);
     vec2 ownMoments = imageLoad(momentsImage, pixel).xy;
     if (isFinite(ownHistory.rgb) && isFinite(vec3(ownMoments, ownHistory.a))) {
       history = ownHistory.rgb;
@@ -266,9 +271,9 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   // Where ray-gen expected no history (a reset, or the motion it wrote says "nowhere") it
   // traced DENOISER_FRESH_HISTORY_FRAMES frames' worth of samples, which count as that many.
   bool fresh = !reference && (reset || motion.z < 0.0);
-  float currentFrames = fresh ? float(DENOISER_FRESH_HISTORY_FRAMES) : 1.0;
+  if (fresh) currentFrames = float(DENOISER_FRESH_HISTORY_FRAMES);
   historyLength = min(historyLength + currentFrames, reference ? 1.0e9 : historyCap);
-  if (!reference && historyLength > currentFrames) {
+  if (!reference && historyLength > currentFrames && frame.previousSize.z == 0u) {
     history = clamp(history, low - CLAMP_MARGIN, high + CLAMP_MARGIN);
   }
   // history + a (current - history): exact when they agree, so fully lit stays exactly 1.

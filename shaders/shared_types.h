@@ -44,6 +44,13 @@ using uint = uint32_t;
 // turning) traces this many frames' worth of soft shadow samples, and the temporal filter
 // counts them as that many frames.
 #define DENOISER_FRESH_HISTORY_FRAMES 8
+// While the view is still and the scene steady (FrameUniforms::previousSize.z), a pixel in a
+// penumbra traces DENOISER_PENUMBRA_FRAMES frames' worth of soft shadow samples until its
+// history holds DENOISER_PENUMBRA_HISTORY frames' worth, and a history may hold up to
+// DENOISER_STEADY_MAX_HISTORY.
+#define DENOISER_PENUMBRA_FRAMES 3
+#define DENOISER_PENUMBRA_HISTORY 64
+#define DENOISER_STEADY_MAX_HISTORY 128
 #define BINDING_HISTORY_NEXT 24  // this frame's history (the first filter iteration)
 #define BINDING_PROBE_SETUP 25   // what the probes measure: focus regions, exposure points
 #define BINDING_LIGHT_ROUTES 26  // lights seen via mirrors (levels with flat mirrors and lights)
@@ -146,7 +153,10 @@ struct FrameUniforms {
   // define: levels that differ only in it share one pipeline and its compile)
   uvec4 mirrorBounces;
   // xy: the size of the previous full frame's picture, whose extent of the images the
-  // denoiser's history holds (it differs from this frame's while the render scale changes)
+  // denoiser's history holds (it differs from this frame's while the render scale changes);
+  // z: 1 where penumbrae trace more samples and the denoiser's history may grow to
+  // DENOISER_STEADY_MAX_HISTORY (a still view of a steady scene; RendererOptions::
+  // steadyPenumbraSamples)
   uvec4 previousSize;
 };
 

@@ -81,11 +81,13 @@ double rmse(const std::vector<float>& a, const std::vector<float>& b) {
 class SoftShadowTest : public test::VulkanTest {
  protected:
   static std::unique_ptr<render::Renderer> makeRenderer(const scene::SceneDesc& scene,
-                                                        bool allFeatures = false) {
+                                                        bool allFeatures = false,
+                                                        bool steadyPenumbraSamples = true) {
     render::RendererOptions options;
     options.width = kSize;
     options.height = kSize;
     options.allFeatures = allFeatures;
+    options.steadyPenumbraSamples = steadyPenumbraSamples;
     return std::make_unique<render::Renderer>(context(), compiler(), scene, options);
   }
 
@@ -233,10 +235,11 @@ TEST_F(SoftShadowTest, disoccluded_pixels_restart_their_history) {
 
 // A pixel the denoiser has no history for traces kFresh frames' worth of soft shadow samples
 // and counts them so: every pixel on the first frame, then only where a surface appears (the
-// slab leaves, and the floor under it is seen for the first time).
+// slab leaves, and the floor under it is seen for the first time). Without the steady view's
+// penumbra samples, which the next test counts.
 TEST_F(SoftShadowTest, a_pixel_without_history_traces_and_counts_several_frames_of_samples) {
   const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
-  auto renderer = makeRenderer(scene);
+  auto renderer = makeRenderer(scene, false, /*steadyPenumbraSamples=*/false);
   const uint64_t firstRays = renderer->renderFrame(frameAt(0)).secondaryRays;
   const uint64_t stillRays = renderer->renderFrame(frameAt(1)).secondaryRays;
   // The only light is the sphere, above everything seen: one shadow ray a sample.
@@ -260,6 +263,57 @@ TEST_F(SoftShadowTest, a_pixel_without_history_traces_and_counts_several_frames_
   EXPECT_EQ(moments[centre].z, kFresh);  // under the slab
   EXPECT_LT(uncovered, uint64_t(kSize) * kSize / 4);
   EXPECT_EQ(uncoveredRays, stillRays + uint64_t(kFresh - 1.0f) * uncovered);
+}
+
+// A still view of a steady scene: a pixel whose history is neither all lit nor all shadowed
+// traces DENOISER_PENUMBRA_FRAMES frames' worth of samples and counts them so, until its history
+// holds DENOISER_PENUMBRA_HISTORY; the history then grows a frame at a time to
+// DENOISER_STEADY_MAX_HISTORY. A frame that changes the scene traces one frame's worth and cuts
+// the history back to DENOISER_MAX_HISTORY.
+TEST_F(SoftShadowTest, a_steady_views_penumbra_traces_more_samples_until_its_history_is_long) {
+  auto renderer = makeRenderer(slabScene(sphereLight(0.4f)));
+  const float penumbraFrames = float(DENOISER_PENUMBRA_FRAMES);
+  const uint64_t pixels = uint64_t(kSize) * kSize;
+  const auto inPenumbra = [](const glm::vec4& history) {
+    return glm::any(glm::greaterThan(glm::vec3(history), glm::vec3(0.0f))) &&
+           glm::any(glm::lessThan(glm::vec3(history), glm::vec3(1.0f)));
+  };
+  renderer->renderFrame(frameAt(0));
+  std::vector<glm::vec4> history = renderer->readDenoiser(DenoiserImage::History);
+  uint64_t longestRays = 0, lastFrameRays = 0;
+  uint32_t frame = 1;
+  for (; frame <= 130; ++frame) {
+    uint64_t expectedRays = pixels;  // the sphere alone: one shadow ray a sample
+    std::vector<float> expectedLength(history.size());
+    for (size_t i = 0; i < history.size(); ++i) {
+      const bool more =
+          inPenumbra(history[i]) && history[i].a < float(DENOISER_PENUMBRA_HISTORY);
+      expectedRays += more ? uint64_t(DENOISER_PENUMBRA_FRAMES - 1) : 0u;
+      expectedLength[i] = std::min(history[i].a + (more ? penumbraFrames : 1.0f),
+                                   float(DENOISER_STEADY_MAX_HISTORY));
+    }
+    const uint64_t rays = renderer->renderFrame(frameAt(frame)).secondaryRays;
+    ASSERT_EQ(rays, expectedRays) << "frame " << frame;
+    longestRays = std::max(longestRays, rays);
+    lastFrameRays = rays;
+    history = renderer->readDenoiser(DenoiserImage::History);
+    for (size_t i = 0; i < history.size(); ++i)
+      ASSERT_EQ(history[i].a, expectedLength[i]) << "frame " << frame << ", pixel " << i;
+  }
+  std::printf("shadow rays a frame: %llu at most, %llu at frame 130 (%llu pixels)\n",
+              static_cast<unsigned long long>(longestRays),
+              static_cast<unsigned long long>(lastFrameRays),
+              static_cast<unsigned long long>(pixels));
+  EXPECT_GT(longestRays, pixels + pixels / 20);  // a penumbra was in view
+  EXPECT_EQ(lastFrameRays, pixels);
+  for (const glm::vec4& texel : history) ASSERT_EQ(texel.a, float(DENOISER_STEADY_MAX_HISTORY));
+
+  // A light's change: one frame's worth everywhere, the history cut back to its usual cap.
+  renderer->setLightTint(0, glm::vec3(1.0f, 0.8f, 0.8f));
+  EXPECT_EQ(renderer->renderFrame(frameAt(frame++)).secondaryRays, pixels);
+  for (const glm::vec4& texel : renderer->readDenoiser(DenoiserImage::History))
+    ASSERT_EQ(texel.a, float(DENOISER_MAX_HISTORY));
+  EXPECT_GT(renderer->renderFrame(frameAt(frame)).secondaryRays, pixels);  // steady again
 }
 
 // The longest run of pixels along a row that are fully lit in `reference` but still dark in
@@ -387,31 +441,39 @@ TEST_F(SoftShadowTest, first_frame_denoised_error_is_at_most_half_the_raw_error)
 }
 
 // A static view keeps converging: the spatial filter tightens as the history grows and stops
-// feeding its blur back, so the error falls from 8 to 16 to 32 frames and stays within 1.5x
-// of 32 raw samples averaged (before that change: 0.033 after 8, 0.045 after 32, against
-// 0.0074 raw). Since the first frame traces kFresh frames' worth, 8 frames hold 15 frames'
-// worth (0.0161 after 8 and 0.0092 after 32 before that).
-TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_32_static_frames) {
+// feeding its blur back, so the error falls from 8 to 16 to 32 frames (before that change: 0.033
+// after 8, 0.045 after 32, against 0.0074 raw 32 spp). Since the first frame traces kFresh
+// frames' worth, 8 frames hold 15 frames' worth (0.0161 after 8 and 0.0092 after 32 before
+// that). Since the steady view's penumbra samples, into a longer history that is not clamped,
+// 32 frames beat 64 raw samples (issue 20's target) and 64 frames do better still: 0.00849,
+// 0.00575, 0.00420, 0.00308 after 8, 16, 32, 64 frames. (Clamped like any other view's, the
+// longer history kept what the rare clamps took away: 0.00563 after 16 frames, 0.00776 after 32,
+// 0.00874 after 64.)
+TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_64_static_frames) {
   const scene::SceneDesc scene = slabScene(sphereLight(0.4f));
   const auto reference = accumulate(scene, 512, 100000);
   auto renderer = makeRenderer(scene);
-  double after8 = 0.0, after16 = 0.0;
-  for (uint32_t frame = 0; frame < 32; ++frame) {
+  double after8 = 0.0, after16 = 0.0, after32 = 0.0;
+  for (uint32_t frame = 0; frame < 64; ++frame) {
     renderer->renderFrame(frameAt(frame));
     const auto error = [&] {
       return rmse(redChannel(renderer->readDenoiser(DenoiserImage::Denoised)), reference);
     };
     if (frame == 7) after8 = error();
     if (frame == 15) after16 = error();
+    if (frame == 31) after32 = error();
   }
-  const double after32 =
+  const double after64 =
       rmse(redChannel(renderer->readDenoiser(DenoiserImage::Denoised)), reference);
-  const double raw32 = rmse(accumulate(scene, 32, 0), reference);
-  std::printf("denoised RMSE after 8 frames %.5f, after 16 %.5f, after 32 %.5f; raw 32 spp %.5f\n",
-              after8, after16, after32, raw32);
+  const double raw64 = rmse(accumulate(scene, 64, 0), reference);
+  std::printf(
+      "denoised RMSE after 8 frames %.5f, after 16 %.5f, after 32 %.5f, after 64 %.5f; raw 64 "
+      "spp %.5f\n",
+      after8, after16, after32, after64, raw64);
   EXPECT_LT(after16, after8);
   EXPECT_LT(after32, after16);
-  EXPECT_LE(after32, 1.5 * raw32);
+  EXPECT_LT(after64, after32);
+  EXPECT_LE(after32, raw64);
 }
 
 // A view strafing a third of a pixel a frame: the history is resampled between pixels every
@@ -596,7 +658,8 @@ TEST_F(SoftShadowTest,
   // The denoiser's temporal pass for a still view reads each pixel's own history, without the
   // reprojection and resampling that come to the same there: the denoised image, its moments and
   // the upscaled picture must come out bit for bit as from the general pass, through a still
-  // view, a light's change, a move of the camera and a still view again.
+  // view, a light's change, a move of the camera and a still view again. (Without the steady
+  // view's penumbra samples and longer history, which only the still pass has.)
   struct Results {
     std::vector<glm::vec4> denoised, moments;
     std::vector<uint8_t> pixels;
@@ -608,6 +671,7 @@ TEST_F(SoftShadowTest,
     options.outputWidth = 90;
     options.outputHeight = 74;
     options.stillViewDenoiser = stillViewDenoiser;
+    options.steadyPenumbraSamples = false;
     render::Renderer renderer(context(), compiler(), slabScene(sphereLight(0.4f)), options);
     std::vector<Results> checkpoints;
     for (uint32_t frame = 0; frame < 30; ++frame) {
@@ -638,12 +702,14 @@ TEST_F(SoftShadowTest, a_still_view_keeps_its_whole_history_while_the_picture_is
   // Temporal upscaling moves the camera rays within their pixels every frame. A still view's
   // sample continues the history of the pixel it falls in, which grows to its cap as it does
   // without upscaling. (Reprojected by the rays' offset, the history was resampled between
-  // pixels every frame: blurred, and cut to a few frames by the cap on that blur.)
+  // pixels every frame: blurred, and cut to a few frames by the cap on that blur.) The usual
+  // cap, without the steady view's longer history.
   render::RendererOptions options;
   options.width = kSize;
   options.height = kSize;
   options.outputWidth = 2 * kSize;
   options.outputHeight = 2 * kSize;
+  options.steadyPenumbraSamples = false;
   render::Renderer renderer(context(), compiler(), slabScene(sphereLight(0.4f)), options);
   for (uint32_t frame = 0; frame < 40; ++frame) renderer.renderFrame(frameAt(frame));
   const auto moments = renderer.readDenoiser(DenoiserImage::Moments);
@@ -701,7 +767,8 @@ TEST_F(SoftShadowTest, a_blocked_sample_reports_the_penumbra_width_in_pixels) {
   // floor's distance; a sample that reached the light carries none (below 0).
   constexpr float kRadius = 0.4f;
   const scene::LightDesc light = sphereLight(kRadius);
-  auto renderer = makeRenderer(slabScene(light));
+  // Without the steady view's penumbra samples: one sample a pixel in the second frame.
+  auto renderer = makeRenderer(slabScene(light), false, /*steadyPenumbraSamples=*/false);
   renderer->renderFrame(frameAt(0));  // traces kFresh samples a pixel
   renderer->renderFrame(frameAt(1));  // one
   const auto raw = renderer->readDenoiser(DenoiserImage::RawVisibility);
