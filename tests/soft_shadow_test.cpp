@@ -286,8 +286,7 @@ TEST_F(SoftShadowTest, a_steady_views_penumbra_traces_more_samples_until_its_his
     uint64_t expectedRays = pixels;  // the sphere alone: one shadow ray a sample
     std::vector<float> expectedLength(history.size());
     for (size_t i = 0; i < history.size(); ++i) {
-      const bool more =
-          inPenumbra(history[i]) && history[i].a < float(DENOISER_PENUMBRA_HISTORY);
+      const bool more = inPenumbra(history[i]) && history[i].a < float(DENOISER_PENUMBRA_HISTORY);
       expectedRays += more ? uint64_t(DENOISER_PENUMBRA_FRAMES - 1) : 0u;
       expectedLength[i] = std::min(history[i].a + (more ? penumbraFrames : 1.0f),
                                    float(DENOISER_STEADY_MAX_HISTORY));
