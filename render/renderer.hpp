@@ -266,6 +266,9 @@ class Renderer {
   // a transform that strayed from currentTransforms_ by more than a tolerance).
   bool sceneChanged_ = true;
   uint32_t steadyFrames_ = 0;  // steadyFrames() of the last full frame
+  // Whether no instance or light changed since the denoiser's history last started afresh: then
+  // it holds nothing that a change made stale.
+  bool unchangedSinceReset_ = false;
   // The last full frame's camera, picture size and instances were the full frame's before it
   // (and it was neither a reset nor a reference accumulation): the denoiser's still view.
   bool stillView_ = false;
