@@ -204,7 +204,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
     // Ray-gen traced more samples where this says so, and a steady scene's history may be
     // longer (the flag is only set for a still view, which this pipeline is).
     if (tracesPenumbraSamples(ownHistory)) currentFrames = float(DENOISER_PENUMBRA_FRAMES);
-    if (frame.previousSize.z != 0u) historyCap = float(DENOISER_STEADY_MAX_HISTORY);
+    if (steadyDenoiserView()) historyCap = float(DENOISER_STEADY_MAX_HISTORY);
     vec2 ownMoments = imageLoad(momentsImage, pixel).xy;
     if (isFinite(ownHistory.rgb) && isFinite(vec3(ownMoments, ownHistory.a))) {
       history = ownHistory.rgb;
@@ -278,7 +278,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   // A steady scene's history holds nothing stale, and is not clamped: with its longer average,
   // what a rare clamp took (all 25 samples lit beside a penumbra) stayed taken, and the test
   // scene's error rose from 0.0056 after 16 still frames to 0.0087 after 64.
-  if (!reference && historyLength > currentFrames && frame.previousSize.z == 0u) {
+  if (!reference && historyLength > currentFrames && !steadyDenoiserView()) {
     history = clamp(history, low - CLAMP_MARGIN, high + CLAMP_MARGIN);
   }
   // history + a (current - history): exact when they agree, so fully lit stays exactly 1.

@@ -76,13 +76,18 @@ bool historyMatches(uvec2 previousSurfacePacked, float expectedDistance, vec3 no
          dot(previousSurface.xyz, normal) >= NORMAL_COSINE_TOLERANCE;
 }
 
+// A still view of a steady scene with nothing stale in the denoiser's history (the renderer
+// decides: FrameUniforms::previousSize.z): penumbrae trace more samples, and the history grows
+// longer and is not clamped.
+bool steadyDenoiserView() { return frame.previousSize.z != 0u; }
+
 // Whether a pixel of a still view of a steady scene traces DENOISER_PENUMBRA_FRAMES frames' worth
 // of soft shadow samples, from its history (the estimate and its length): where its samples so
 // far were neither all lit nor all shadowed (a penumbra) and the history holds fewer than
 // DENOISER_PENUMBRA_HISTORY frames' worth. Ray-gen decides by it and the temporal pass counts
 // the frames by it, from the same texel.
 bool tracesPenumbraSamples(vec4 history) {
-  return frame.previousSize.z != 0u && history.a < float(DENOISER_PENUMBRA_HISTORY) &&
+  return steadyDenoiserView() && history.a < float(DENOISER_PENUMBRA_HISTORY) &&
          any(greaterThan(history.rgb, vec3(0.0))) && any(lessThan(history.rgb, vec3(1.0)));
 }
 
