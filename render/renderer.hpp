@@ -53,7 +53,8 @@ struct RendererOptions {
   // instances as in the last full frame), which reads each pixel's own history. The results are
   // the same as the general pass's; false runs the general pass on every frame (to compare).
   bool stillViewDenoiser = true;
-  // In a still view of a steady scene (Renderer::steadyFrames() counting), a pixel in a penumbra
+  // In a still view of a steady scene (Renderer::steadyFrames() counting; after a change of an
+  // instance or a light, from the 64th steady frame on), a pixel in a penumbra
   // traces DENOISER_PENUMBRA_FRAMES frames' worth of soft shadow samples until its history holds
   // DENOISER_PENUMBRA_HISTORY frames' worth, and a history grows to DENOISER_STEADY_MAX_HISTORY
   // (shared_types.h); false: one frame's worth into a history of DENOISER_MAX_HISTORY, as in
