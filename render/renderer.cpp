@@ -592,7 +592,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   if (denoiser_)
     denoiser_->createPipelines(compiler, pipelineLayout_, options_.neighbourhoodReads,
                                greyVisibility);
-  if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_);
+  if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_, features.mirrors);
 }
 
 void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {

@@ -23,9 +23,10 @@ float radicalInverse(uint32_t index, uint32_t base) {
 }
 
 // The resolve for any view, or for a steady one (STEADY_VIEW: each pixel's history where it is,
-// unclamped; shaders/temporal_upscale.glsl).
-ShaderDefines resolveDefines(bool steadyView) {
-  return {{"STEADY_VIEW", steadyView ? "1" : "0"}};
+// unclamped), of a scene with mirrors or without (HAS_MIRRORS: a reflection's motion inside a
+// mirror, the mirror's along its outline); shaders/temporal_upscale.glsl.
+ShaderDefines resolveDefines(bool steadyView, bool mirrors) {
+  return {{"STEADY_VIEW", steadyView ? "1" : "0"}, {"HAS_MIRRORS", mirrors ? "1" : "0"}};
 }
 const char* resolveName(bool steadyView) {
   return steadyView ? "temporal upscale, steady view" : "temporal upscale";
@@ -139,26 +140,27 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
   return images;
 }
 
-void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout) {
+void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
+                                      bool mirrors) {
   for (const bool steadyView : {false, true}) {
+    const ShaderDefines defines = resolveDefines(steadyView, mirrors);
     resolves_[steadyView] =
         attachments_
-            ? createGraphicsPipeline(compiler, layout, steadyView)
-            : createComputePipeline(
-                  context_, layout,
-                  compiler.compile("temporal_upscale.comp", resolveDefines(steadyView)).spirv,
-                  resolveName(steadyView));
+            ? createGraphicsPipeline(compiler, layout, defines, resolveName(steadyView))
+            : createComputePipeline(context_, layout,
+                                    compiler.compile("temporal_upscale.comp", defines).spirv,
+                                    resolveName(steadyView));
   }
 }
 
 VkPipeline TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler,
-                                                    VkPipelineLayout layout, bool steadyView) {
+                                                    VkPipelineLayout layout,
+                                                    const ShaderDefines& defines,
+                                                    const char* name) {
   const VkDevice device = context_.device();
   const std::array<VkShaderModule, 2> modules = {
       createShaderModule(context_, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
-      createShaderModule(
-          context_, compiler.compile("temporal_upscale.frag", resolveDefines(steadyView)).spirv,
-          resolveName(steadyView))};
+      createShaderModule(context_, compiler.compile("temporal_upscale.frag", defines).spirv, name)};
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
   stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
@@ -214,7 +216,7 @@ VkPipeline TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler,
       vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
   for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
   vkCheck(result, "vkCreateGraphicsPipelines");
-  context_.setName(pipeline, VK_OBJECT_TYPE_PIPELINE, resolveName(steadyView));
+  context_.setName(pipeline, VK_OBJECT_TYPE_PIPELINE, name);
   return pipeline;
 }
 

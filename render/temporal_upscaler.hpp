@@ -10,12 +10,12 @@
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
 
+#include "render/shader_compiler.hpp"
 #include "render/storage_image.hpp"
 
 namespace render {
 
 class Context;
-class ShaderCompiler;
 
 // How the resolve writes the picture and the history: as a fragment shader's colour attachments
 // or as a compute shader's image stores. The results are the same; Auto takes the attachments
@@ -37,7 +37,8 @@ class TemporalUpscaler {
 
   // Storage images by binding for frame parity 0 or 1 ("previous" bindings get the other's).
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
-  void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout);
+  // `mirrors`: the scene has mirrors, whose reflections ray-gen gives a motion of their own.
+  void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout, bool mirrors);
   // The resolve into frame parity `parity`'s history, ordered after this frame's tonemap and
   // ray-gen and after the earlier frames' reads of what it overwrites. A steady view (the scene
   // held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames) takes the pipeline compiled for it, which
@@ -58,7 +59,7 @@ class TemporalUpscaler {
   static constexpr VkFormat kHistoryFormat = VK_FORMAT_R32G32B32A32_UINT;
   void createRenderPass();
   VkPipeline createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
-                                    bool steadyView);
+                                    const ShaderDefines& defines, const char* name);
 
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;

@@ -57,7 +57,10 @@ using uint = uint32_t;
 #define BINDING_TRIANGLE_MATERIALS 27  // per-triangle materials of meshes with several
 // Temporal upscaling (a renderer with an output size): ray-gen's motion at the render size, and
 // the history and picture at the output size.
-#define BINDING_UPSCALE_MOTION 28  // rgba32f: previous pixel xy, distance z, first instance + 1 w
+// rgba32f: previous pixel xy, distance z, first instance + 1 w; in a mirror that held still the
+// reflection's previous pixel, the mirror's distance and minus (the mirror + 1) (ray-gen's
+// writeUpscaleMotion)
+#define BINDING_UPSCALE_MOTION 28
 // rgba32ui: accumulated display rgb and its weight as four half floats (xy), the instance + 1
 // the history shows (z; 0: none); the previous frame's
 #define BINDING_UPSCALE_HISTORY 29

@@ -1,7 +1,8 @@
 // Temporal upscaling (TAAU): this frame's jittered picture at the render size is accumulated
 // into a history at the output size, which follows the motion ray-gen wrote (camera and moving
-// instances), is clamped to the range of this frame's samples around it (no ghosts where the
-// view changed), and is dropped where a moving instance was seen before (no trail behind it).
+// instances; in a mirror, the reflection's), is clamped to the range of this frame's samples
+// around it (no ghosts where the view changed), and is dropped where a moving instance was seen
+// before (no trail behind it).
 // Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
 // This file resolves one output pixel for the two entry points:
 // temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
@@ -16,6 +17,8 @@ layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlo
 };
 // The tonemap's output at the render size.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
+// Ray-gen's motion: where each sample's point was in the previous frame (ray-gen's
+// writeUpscaleMotion says what it holds for a reflection).
 layout(set = 0, binding = BINDING_UPSCALE_MOTION, rgba32f) uniform readonly image2D motionImage;
 // The history: its rgb and weight as four half floats (packHalf2x16 of rg and of b and the
 // weight) and the instance + 1 it shows (0: none), one read and one store a pixel.
@@ -45,6 +48,11 @@ const float kStillRangeMargin = 0.25;
 #ifndef STEADY_VIEW
 #define STEADY_VIEW 0
 #endif
+// HAS_MIRRORS 1: the scene has mirrors, so a sample's motion may be a reflection's (ray-gen's
+// writeUpscaleMotion); without, the resolve is compiled without that test.
+#ifndef HAS_MIRRORS
+#define HAS_MIRRORS 0
+#endif
 
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
 // smooth bump about a pixel wide, like the box filter of a supersampled reference.
@@ -53,6 +61,19 @@ const float kSampleRadius = 1.0;
 // the bilinear upscale of this frame, so the first frames look like a plain upscale.
 const float kEnoughWeight = 1.0;
 const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pixel
+
+#if HAS_MIRRORS
+#include "previous_view.glsl"
+
+// Where the point at `distance` along the camera ray of render pixel `renderPixel` was in the
+// previous frame: ray-gen's motion of a surface that held still, found again from its distance.
+vec3 previousOfCameraRayPoint(ivec2 renderPixel, vec2 jitter, float distance) {
+  vec2 ndc = (vec2(renderPixel) + 0.5 + jitter) / vec2(frame.sizeFrameLights.xy) * 2.0 - 1.0;
+  vec3 direction = normalize(frame.cameraForward.xyz + ndc.x * frame.cameraRight.xyz -
+                             ndc.y * frame.cameraUp.xyz);
+  return projectToPreviousView(frame.cameraPosition.xyz + direction * distance);
+}
+#endif
 
 vec4 historyColourAndWeight(uvec4 texel) {
   return vec4(unpackHalf2x16(texel.x), unpackHalf2x16(texel.y));
@@ -89,15 +110,34 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
   vec4 motion = imageLoad(motionImage, nearest);
   ivec2 motionSample = nearest;
+#if HAS_MIRRORS
+  float nearestShows = motion.w;
+  // The four samples show the same instance, and the same way (a mirror's reflection or not).
+  bool oneSurface = true;
+#endif
   for (int corner = 0; corner < 4; ++corner) {
     ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
     if (at == nearest) continue;
     vec4 candidate = imageLoad(motionImage, at);
+#if HAS_MIRRORS
+    oneSurface = oneSurface && candidate.w == nearestShows;
+#endif
     if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
       motion = candidate;
       motionSample = at;
     }
   }
+#if HAS_MIRRORS
+  // A reflection's sample (w < 0): inside the mirror the pixel follows the reflection, whose
+  // motion ray-gen wrote. Along the mirror's outline, where the four samples do not all show
+  // it, the outline moves with the mirror: its point on the sample's ray, z away. (With the
+  // reflection's motion there the outline came out in the samples' steps: 19 Last Light moving,
+  // docs/QUALITY.md, session 26.)
+  if (motion.w < 0.0) {
+    if (!oneSurface) motion.xyz = previousOfCameraRayPoint(motionSample, jitter, motion.z);
+    motion.w = -motion.w;
+  }
+#endif
   seenInstance = uint(motion.w);
   bool historyThere = motion.z > 0.0;  // the point was in front of the previous camera
   // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
