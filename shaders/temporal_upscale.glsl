@@ -62,16 +62,14 @@ const float kSampleRadius = 1.0;
 const float kEnoughWeight = 1.0;
 const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pixel
 
-#if HAS_MIRRORS
-#include "previous_view.glsl"
+#include "view_motion.glsl"
 
+#if HAS_MIRRORS
 // Where the point at `distance` along the camera ray of render pixel `renderPixel` was in the
 // previous frame: ray-gen's motion of a surface that held still, found again from its distance.
 vec3 previousOfCameraRayPoint(ivec2 renderPixel, vec2 jitter, float distance) {
-  vec2 ndc = (vec2(renderPixel) + 0.5 + jitter) / vec2(frame.sizeFrameLights.xy) * 2.0 - 1.0;
-  vec3 direction = normalize(frame.cameraForward.xyz + ndc.x * frame.cameraRight.xyz -
-                             ndc.y * frame.cameraUp.xyz);
-  return projectToPreviousView(frame.cameraPosition.xyz + direction * distance);
+  return projectToPreviousView(frame.cameraPosition.xyz +
+                               cameraRayDirection(vec2(renderPixel), jitter) * distance);
 }
 #endif
 
@@ -82,15 +80,6 @@ vec4 historyColourAndWeight(uvec4 texel) {
 float sampleWeight(vec2 offset) {
   float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
   return t * t;
-}
-
-bool instanceMoved(uint instancePlusOne) {
-  // Most frames nothing moved: then the instances' motion is not read (on lavapipe these
-  // reads were a fifth of the pass).
-  if (frame.denoise.w == 0u || instancePlusOne == 0u) return false;
-  vec4 rows[3] = instances[instancePlusOne - 1u].previousFromCurrent;
-  return rows[0] != vec4(1.0, 0.0, 0.0, 0.0) || rows[1] != vec4(0.0, 1.0, 0.0, 0.0) ||
-         rows[2] != vec4(0.0, 0.0, 1.0, 0.0);
 }
 
 // The history at where this pixel's point was in the previous frame, clamped to the range of
