@@ -70,6 +70,32 @@ scene::SceneDesc mirrorScene() {
   return builder.scene;
 }
 
+// Dark bars 0.6 samples wide and 3.3 apart, 4 m ahead, before a pale wall 5 m away: details
+// thinner than the samples' spacing, which the four samples around a pixel mostly miss.
+constexpr float kThinBarDepth = -4.0f;
+const float kSampleAtThinBars =
+    2.0f * -kThinBarDepth * std::tan(glm::radians(30.0f)) / float(kRenderHeight);
+
+scene::SceneDesc thinBarsScene() {
+  SceneBuilder builder;
+  const auto paint = [&](float grey) {
+    scene::MaterialDesc material;
+    material.baseColor = glm::vec3(grey);
+    return builder.material(material);
+  };
+  const uint32_t pale = paint(0.8f), dark = paint(0.0f);
+  builder.instance(builder.mesh(game::primitives::box({40.0f, 20.0f, 0.1f})), pale,
+                   at({0.0f, 0.0f, -5.0f}));
+  const uint32_t bar = builder.mesh(game::primitives::box({0.6f * kSampleAtThinBars, 2.0f, 0.05f}));
+  for (int i = -12; i <= 12; ++i)
+    builder.instance(bar, dark, at({3.3f * kSampleAtThinBars * float(i), 0.0f, kThinBarDepth}));
+  scene::LightDesc lamp;
+  lamp.position = glm::vec3(0.0f, 2.0f, 0.0f);
+  lamp.intensity = 20.0f;
+  builder.light(lamp);
+  return builder.scene;
+}
+
 scene::FrameDesc frameAt(uint32_t index) {
   scene::FrameDesc frame;
   frame.tonemap = scene::Tonemap::Identity;
@@ -243,6 +269,16 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_follows_what_a_mirror_shows_not_the_
   // 1.25x; with the mirror's own motion inside it, as before session 26, 1.81x. (The outline's
   // rule is measured on 19 Last Light: docs/QUALITY.md.)
   EXPECT_LE(errors.moving, 1.5 * errors.still);
+}
+
+TEST_F(TemporalUpscaleTest, a_strafing_view_lets_go_of_history_the_clamp_moved_far) {
+  // Strafing 0.7 samples a frame past bars thinner than a sample, the history of a pixel a bar
+  // has left (or reached) lies far outside this frame's samples' range; clamped, it is still
+  // wrong, so it counts for less and the samples take over sooner. 1.75x the still view's error;
+  // with the clamped history at its full weight, as before session 27, 2.08x. (Issue 20's 1.5x
+  // is not met on this scene: docs/QUALITY.md, session 27, has the levels.)
+  const StrafeErrors errors = strafedAndHeldStill(thinBarsScene(), 0.7f * kSampleAtThinBars);
+  EXPECT_LE(errors.moving, 1.9 * errors.still);
 }
 
 TEST_F(TemporalUpscaleTest, a_still_view_holds_steady_once_converged) {
