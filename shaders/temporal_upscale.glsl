@@ -67,9 +67,10 @@ const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pix
 // than the samples' spacing that they miss now): it keeps less of its weight the further it was
 // moved, down to kClampedHistoryFloor of it at kClampedHistoryDistance (in the encoded colour's
 // units, the largest channel's move), so this frame's samples take over sooner. Measured with
-// bench-upscale on every level (docs/QUALITY.md, session 27): moving after 32 frames lower on 15
+// bench-upscale on every level (docs/QUALITY.md, session 27): moving after 32 frames lower on 14
 // of 19 (07 Crossing, 13 Colour Lock and 06 Night Watch by 15-18 %), within 1.5x of the same
-// view held still on 9 instead of 5; a still view is unchanged.
+// view held still on 9 instead of 5 (the walk's first 8 frames from an empty history 2.6 %
+// higher); a still view is unchanged.
 const float kClampedHistoryDistance = 0.25;
 const float kClampedHistoryFloor = 0.1;
 
