@@ -23,6 +23,18 @@ constexpr uint32_t kOutputWidth = 128, kOutputHeight = 72;
 // A white box against a dark wall 5 m away, seen head-on; the box's x per frame is given.
 constexpr float kBoxDepth = -3.0f;
 
+// The width of a render pixel (a sample's spacing) `distance` ahead of the camera (60 degrees
+// vertical field of view).
+float renderPixelAt(float distance) {
+  return 2.0f * distance * std::tan(glm::radians(30.0f)) / float(kRenderHeight);
+}
+
+uint32_t greyMaterial(SceneBuilder& builder, float grey) {
+  scene::MaterialDesc material;
+  material.baseColor = glm::vec3(grey);
+  return builder.material(material);
+}
+
 scene::SceneDesc boxScene(float boxX) {
   SceneBuilder builder;
   scene::MaterialDesc dark, white;
@@ -48,12 +60,8 @@ constexpr float kMirrorDepth = -3.0f, kBarsBehindCamera = 2.0f;
 
 scene::SceneDesc mirrorScene() {
   SceneBuilder builder;
-  const auto paint = [&](float grey) {
-    scene::MaterialDesc material;
-    material.baseColor = glm::vec3(grey);
-    return builder.material(material);
-  };
-  const uint32_t wall = paint(0.3f), dark = paint(0.25f), pale = paint(0.6f);
+  const uint32_t wall = greyMaterial(builder, 0.3f), dark = greyMaterial(builder, 0.25f),
+                 pale = greyMaterial(builder, 0.6f);
   builder.instance(builder.mesh(game::primitives::box({20.0f, 20.0f, 0.1f})), wall,
                    at({0.0f, 0.0f, -5.0f}));
   builder.instance(builder.mesh(game::primitives::box({4.0f, 2.0f, 0.05f})),
@@ -73,17 +81,11 @@ scene::SceneDesc mirrorScene() {
 // Dark bars 0.6 samples wide and 3.3 apart, 4 m ahead, before a pale wall 5 m away: details
 // thinner than the samples' spacing, which the four samples around a pixel mostly miss.
 constexpr float kThinBarDepth = -4.0f;
-const float kSampleAtThinBars =
-    2.0f * -kThinBarDepth * std::tan(glm::radians(30.0f)) / float(kRenderHeight);
+const float kSampleAtThinBars = renderPixelAt(-kThinBarDepth);
 
 scene::SceneDesc thinBarsScene() {
   SceneBuilder builder;
-  const auto paint = [&](float grey) {
-    scene::MaterialDesc material;
-    material.baseColor = glm::vec3(grey);
-    return builder.material(material);
-  };
-  const uint32_t pale = paint(0.8f), dark = paint(0.0f);
+  const uint32_t pale = greyMaterial(builder, 0.8f), dark = greyMaterial(builder, 0.0f);
   builder.instance(builder.mesh(game::primitives::box({40.0f, 20.0f, 0.1f})), pale,
                    at({0.0f, 0.0f, -5.0f}));
   const uint32_t bar = builder.mesh(game::primitives::box({0.6f * kSampleAtThinBars, 2.0f, 0.05f}));
@@ -206,7 +208,7 @@ TEST_F(TemporalUpscaleTest, the_output_is_the_output_size_and_a_static_view_conv
 
 TEST_F(TemporalUpscaleTest, a_moving_box_leaves_no_trail_longer_than_2_output_pixels) {
   // The box slides one render pixel (4 output pixels) to the right a frame for 16 frames.
-  const float pixelAtBox = 2.0f * -kBoxDepth * std::tan(glm::radians(30.0f)) / kRenderHeight;
+  const float pixelAtBox = renderPixelAt(-kBoxDepth);
   const auto boxAt = [&](uint32_t frame) { return -0.8f + pixelAtBox * float(frame); };
   auto renderer = upscaler(boxScene(boxAt(0)));
   const uint32_t frames = 16;
@@ -248,7 +250,7 @@ TEST_F(TemporalUpscaleTest, a_moving_box_leaves_no_trail_longer_than_2_output_pi
 TEST_F(TemporalUpscaleTest, a_strafing_view_is_within_1_5x_of_the_same_view_held_still) {
   // The camera strafes right 1.5 render pixels (at the box's depth) a frame for 16 frames, so
   // the box's edges move over the wall behind it (parallax) at a fraction of a sample a frame.
-  const float pixelAtBox = 2.0f * -kBoxDepth * std::tan(glm::radians(30.0f)) / kRenderHeight;
+  const float pixelAtBox = renderPixelAt(-kBoxDepth);
   const float step = 1.5f * pixelAtBox;
   const StrafeErrors errors = strafedAndHeldStill(boxScene(0.0f), step);
   // Issue 20 asks for 1.5x. Reprojecting with the nearest-in-depth sample's motion kept it below
@@ -264,7 +266,7 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_follows_what_a_mirror_shows_not_the_
   // depth moves the mirror's surface 0.8. Ray-gen writes the reflection's motion inside the
   // mirror and the resolve takes the mirror's own along its outline.
   const float imageDepth = -kMirrorDepth + (kBarsBehindCamera - kMirrorDepth);
-  const float step = 0.3f * 2.0f * imageDepth * std::tan(glm::radians(30.0f)) / kRenderHeight;
+  const float step = 0.3f * renderPixelAt(imageDepth);
   const StrafeErrors errors = strafedAndHeldStill(mirrorScene(), step);
   // 1.25x; with the mirror's own motion inside it, as before session 26, 1.81x. (The outline's
   // rule is measured on 19 Last Light: docs/QUALITY.md.)
