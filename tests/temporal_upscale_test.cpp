@@ -256,7 +256,8 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_is_within_1_5x_of_the_same_view_held
   // Issue 20 asks for 1.5x. Reprojecting with the nearest-in-depth sample's motion kept it below
   // the still view's clamped history (0.90x; with the nearest sample's motion 1.08x). The still
   // view's history now goes unclamped once the scene has held 8 frames, which lowered its error
-  // 0.00161 -> 0.00112 (the strafing view's is 0.00145 as before): 1.30x.
+  // 0.00161 -> 0.00112 (the strafing view's is 0.00145 as before): 1.30x. Since session 27 a
+  // moving history the clamp moved far keeps less of its weight: 0.00144, 1.28x.
   EXPECT_LE(errors.moving, 1.5 * errors.still);
 }
 
