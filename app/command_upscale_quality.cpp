@@ -128,10 +128,13 @@ class UpscaleBench {
     return std::clamp(uint32_t(std::lround(float(side) * options_.pictureScale)), 1u, side);
   }
 
-  // The camera walking at walking speed where the whole moving run has room.
+  // The camera walking at walking speed where the whole moving run has room, and past the run's
+  // last frame back and forth over it: a player walks for longer than a second.
   scene::CameraDesc walkedAt(uint32_t frame) const {
     scene::CameraDesc camera = level_.camera;
-    camera.position += walk_.direction * (kWalkPerFrame * float(frame));
+    const uint32_t phase = frame % (2u * kLongestWalkFrames);
+    const uint32_t along = phase <= kLongestWalkFrames ? phase : 2u * kLongestWalkFrames - phase;
+    camera.position += walk_.direction * (kWalkPerFrame * float(along));
     return camera;
   }
 
@@ -265,8 +268,8 @@ int commandBenchUpscale(const Options& options) {
   std::printf("%s: %ux%u -> %ux%u on %s; reference: %u jittered samples per pixel at %ux%u\n",
               level.name.c_str(), options.width, options.height, outputWidth, outputHeight,
               bench.context().deviceInfo().name.c_str(), samples, outputWidth, outputHeight);
-  std::printf("moving: the camera walks %s at %.2f m a frame\n", bench.walkName(),
-              double(kWalkPerFrame));
+  std::printf("moving: the camera walks %s at %.2f m a frame for %u frames, then back and forth\n",
+              bench.walkName(), double(kWalkPerFrame), kLongestWalkFrames + 1);
   if (options.pictureScale < 1.0f)
     std::printf("the upscaled runs trace %ux%u of the %ux%u (--picture-scale %g)\n",
                 bench.scaledSide(options.width), bench.scaledSide(options.height), options.width,
@@ -299,7 +302,8 @@ int commandBenchUpscale(const Options& options) {
   const auto doubled = bench.upscaled({16}, atStart, options.width * 2, options.height * 2);
   rows.push_back(measure("TAAU 2x after 16, bilinear upscale", 16, doubled[0].second,
                          bilinearUpscale(doubled[0].first, outputWidth, outputHeight), still));
-  const std::vector<uint32_t> movingCheckpoints = {8, 32};
+  // After 96 frames the camera has walked the run out, back and out again, and just turned.
+  const std::vector<uint32_t> movingCheckpoints = {8, 32, 96};
   const auto movingRuns = bench.upscaled(movingCheckpoints, walking, outputWidth, outputHeight);
   Picture walkEnd;
   for (size_t i = 0; i < movingCheckpoints.size(); ++i) {

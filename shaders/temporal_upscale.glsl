@@ -2,8 +2,8 @@
 // into a history at the output size, which follows the motion ray-gen wrote (camera and moving
 // instances; in a mirror, the reflection's), is clamped to the range of this frame's samples
 // around it (no ghosts where the view changed) and, while the camera moves, counts for less the
-// further the clamp moved it, and is dropped where a moving instance was seen before (no trail
-// behind it).
+// further the clamp moved it and for at most 16 frames' worth (each frame's resampling blurs
+// it), and is dropped where a moving instance was seen before (no trail behind it).
 // Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
 // This file resolves one output pixel for the two entry points:
 // temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
@@ -73,6 +73,14 @@ const float kMotionGrid = 256.0;  // the reprojection rounds to 1/256 output pix
 // higher); a still view is unchanged.
 const float kClampedHistoryDistance = 0.25;
 const float kClampedHistoryFloor = 0.1;
+// While the camera moves, each frame resamples the history bilinearly, which blurs it, so the
+// older a sample the blurrier: a moving history keeps at most this many frames' worth of the
+// weight its pixel gets a frame. (A still view's cap, in resolvePixel, lets it average on.)
+// Measured with bench-upscale on every level (docs/QUALITY.md, session 28): moving after 32
+// frames lower on every level, by up to 2.4 %, and after 96 frames of walking back and forth by
+// up to 8 %; 12 frames' worth gained more on 02 Penumbra and 06 Night Watch and lost on 16 The
+// Lift and 10 Relay.
+const float kMovingHistoryFrames = 16.0;
 
 #include "view_motion.glsl"
 
@@ -205,7 +213,13 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
         vec3 reprojected = sum.rgb / taps;
         history = clamp(reprojected, low, high);
         historyWeight = sum.a / taps;
-        if (!cameraStill) historyWeight *= clampedHistoryShare(history - reprojected);
+        if (!cameraStill) {
+          // The weight a pixel gets a frame: the sample bump's integral times the samples an
+          // output pixel gets.
+          float weightPerFrame = 1.0471976 * kSampleRadius * kSampleRadius * scale.x * scale.y;
+          historyWeight = min(historyWeight * clampedHistoryShare(history - reprojected),
+                              kMovingHistoryFrames * weightPerFrame);
+        }
       }
     }
   }
