@@ -77,9 +77,9 @@ const float kClampedHistoryFloor = 0.1;
 // older a sample the blurrier: a moving history keeps at most this many frames' worth of the
 // weight its pixel gets a frame. (A still view's cap, in resolvePixel, lets it average on.)
 // Measured with bench-upscale on every level (docs/QUALITY.md, session 28): moving after 32
-// frames lower on every level, by up to 2.4 %, and after 96 frames of walking back and forth by
-// up to 8 %; 12 frames' worth gained more on 02 Penumbra and 06 Night Watch and lost on 16 The
-// Lift and 10 Relay.
+// frames lower on 17 of 19 (by up to 5 %), after 96 frames of walking back and forth lower on
+// 17 (by up to 10 %), the first 8 frames unchanged; 12 frames' worth gained more on 02
+// Penumbra and 06 Night Watch and lost on 16 The Lift and 10 Relay.
 const float kMovingHistoryFrames = 16.0;
 
 #include "view_motion.glsl"
