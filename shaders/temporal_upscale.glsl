@@ -78,7 +78,7 @@ const float kClampedHistoryFloor = 0.1;
 // weight its pixel gets a frame. (A still view's cap, in resolvePixel, lets it average on.)
 // Measured with bench-upscale on every level (docs/QUALITY.md, session 28): moving after 32
 // frames lower on 17 of 19 (by up to 5 %), after 96 frames of walking back and forth lower on
-// 17 (by up to 10 %), the first 8 frames unchanged; 12 frames' worth gained more on 02
+// 17 (by up to 10 %), the first 8 frames within 0.1 %; 12 frames' worth gained more on 02
 // Penumbra and 06 Night Watch and lost on 16 The Lift and 10 Relay.
 const float kMovingHistoryFrames = 16.0;
 
