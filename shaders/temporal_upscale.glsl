@@ -2,9 +2,9 @@
 // into a history at the output size, which follows the motion ray-gen wrote (camera and moving
 // instances; in a mirror, the reflection's), is clamped to the range of this frame's samples
 // around it (no ghosts where the view changed) and, while the camera moves, counts for less the
-// further the clamp moved it, where it moves counts for at most 16 frames' worth (each frame's
-// resampling blurs it), and is dropped where a moving instance was seen before (no trail behind
-// it).
+// further the clamp moved it, where it moves counts for at most 16 frames' worth at 4x, 8 at 2x
+// (each frame's resampling blurs it), and is dropped where a moving instance was seen before (no
+// trail behind it).
 // Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
 // This file resolves one output pixel for the two entry points:
 // temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
@@ -76,15 +76,17 @@ const float kClampedHistoryDistance = 0.25;
 const float kClampedHistoryFloor = 0.1;
 // While the camera moves, or the instance a pixel shows, each frame resamples the history
 // bilinearly, which blurs it, so the older a sample the blurrier: a moving history keeps at most
-// this many frames' worth of the weight its pixel gets a frame. (A still view's cap, in
-// resolvePixel, lets it average on.)
-// Measured with bench-upscale on every level (docs/QUALITY.md, session 28): moving after 32
-// frames lower on 17 of 19 (by up to 5 %), after 96 frames of walking back and forth lower on
-// 17 (by up to 10 %), the first 8 frames within 0.1 %; 12 frames' worth gained more on 02
-// Penumbra and 06 Night Watch and lost on 16 The Lift and 10 Relay. A panel of bars one sample
-// wide sliding past a still camera for 64 frames: 2.26x the error of the panel held still
-// without the cap, 1.94x with it.
-const float kMovingHistoryFrames = 16.0;
+// so many frames' worth of the weight its pixel gets a frame, as many as it takes the jitter to
+// put a sample within every output pixel (1 / (render pixels per output pixel)^2: 16 at 4x, 4
+// at 2x) and at least kMovingHistoryFramesAtLeast. (A still view's cap, in resolvePixel, lets it
+// average on.) Measured with bench-upscale (docs/QUALITY.md, session 28): at 4x, 16 frames
+// against none lowered moving after 32 frames on 17 of 19 levels (by up to 5 %) and after 96
+// frames of walking back and forth on 17 (by up to 10 %), the first 8 frames within 0.1 %; 12
+// frames gained more on 02 Penumbra and 06 Night Watch and lost on 16 The Lift and 10 Relay. At
+// 2x, 8 frames against 16 lowered moving after 32 frames on the six levels measured (by 2-6 %).
+// A panel of bars one sample wide sliding past a still camera for 64 frames at 4x: 2.26x the
+// error of the panel held still without the cap, 1.94x with it.
+const float kMovingHistoryFramesAtLeast = 8.0;
 
 #include "view_motion.glsl"
 
@@ -222,7 +224,8 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
           // The weight a pixel gets a frame: the sample bump's integral times the samples an
           // output pixel gets.
           float weightPerFrame = 1.0471976 * kSampleRadius * kSampleRadius * scale.x * scale.y;
-          historyWeight = min(historyWeight, kMovingHistoryFrames * weightPerFrame);
+          float frames = max(1.0 / (scale.x * scale.y), kMovingHistoryFramesAtLeast);
+          historyWeight = min(historyWeight, frames * weightPerFrame);
         }
       }
     }
