@@ -333,8 +333,8 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_lets_go_of_history_the_clamp_moved_f
 TEST_F(TemporalUpscaleTest, a_long_strafe_is_within_1_5x_of_the_same_view_held_still) {
   // Strafing 0.45 samples a frame for 64 frames past bars 1.5 samples wide: each frame resamples
   // the history, so a history that kept every frame's samples is a blurred one. A moving history
-  // keeps at most 16 frames' worth: 1.33x the still view's error; without that cap, as before
-  // session 28, 1.57x.
+  // keeps at most 16 frames' worth at 4x: 1.33x the still view's error; without that cap, as
+  // before session 28, 1.57x.
   const StrafeErrors errors =
       strafedAndHeldStill(barsScene(), 0.45f * kSampleAtBars, /*frames=*/64);
   EXPECT_LE(errors.moving, 1.5 * errors.still);
