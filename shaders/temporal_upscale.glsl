@@ -59,6 +59,8 @@ const float kStillRangeMargin = 0.25;
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
 // smooth bump about a pixel wide, like the box filter of a supersampled reference.
 const float kSampleRadius = 1.0;
+// The bump's integral (pi r^2 / 3 output pixels): a sample's whole weight over the pixels.
+const float kSampleBumpIntegral = 1.0471976 * kSampleRadius * kSampleRadius;
 // Accumulated weight worth one sample at the pixel centre: below it the picture blends towards
 // the bilinear upscale of this frame, so the first frames look like a plain upscale.
 const float kEnoughWeight = 1.0;
@@ -171,7 +173,9 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
                      frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
                      frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
                      frame.previousCameraForward.xyz == frame.cameraForward.xyz;
-  if (cameraStill && !instanceMoved(seenInstance)) {
+  // What the pixel shows moves: the camera does, or the instance the pixel shows.
+  bool pointMoves = !cameraStill || instanceMoved(seenInstance);
+  if (!pointMoves) {
     // The four samples around the pixel are in the range already. The 3x3 is centred on the
     // nearest of them, so its other five lie in the column and the row just past the four on
     // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
@@ -220,10 +224,10 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
         history = clamp(reprojected, low, high);
         historyWeight = sum.a / taps;
         if (!cameraStill) historyWeight *= clampedHistoryShare(history - reprojected);
-        if (!cameraStill || instanceMoved(seenInstance)) {
+        if (pointMoves) {
           // The weight a pixel gets a frame: the sample bump's integral times the samples an
           // output pixel gets.
-          float weightPerFrame = 1.0471976 * kSampleRadius * kSampleRadius * scale.x * scale.y;
+          float weightPerFrame = kSampleBumpIntegral * scale.x * scale.y;
           float frames = max(1.0 / (scale.x * scale.y), kMovingHistoryFramesAtLeast);
           historyWeight = min(historyWeight, frames * weightPerFrame);
         }
@@ -281,7 +285,7 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   // near its centre, and a history held to 32 frames' worth took a ninth (2x) to a third (4x)
   // of each such sample: 02 at 2x after 200 frames changed three times as much from one frame
   // to the next (RMSE 0.00069 against 0.00022; docs/QUALITY.md, session 20).
-  float expectedWeight = 1.0471976 * kSampleRadius * kSampleRadius / (scale.x * scale.y);
+  float expectedWeight = kSampleBumpIntegral / (scale.x * scale.y);
   historyWeight = min(historyWeight, UPSCALE_MAX_HISTORY_FRAMES * expectedWeight);
   float total = historyWeight + weight;
   vec3 accumulated = (history.rgb * historyWeight + weighted) / max(total, 1.0e-6);

@@ -78,6 +78,14 @@ scene::SceneDesc mirrorScene() {
   return builder.scene;
 }
 
+// A lamp 2 m above the camera, which lights what is ahead of it.
+void lampAboveTheCamera(SceneBuilder& builder) {
+  scene::LightDesc lamp;
+  lamp.position = glm::vec3(0.0f, 2.0f, 0.0f);
+  lamp.intensity = 20.0f;
+  builder.light(lamp);
+}
+
 // Dark bars 0.6 samples wide and 3.3 apart, 4 m ahead, before a pale wall 5 m away: details
 // thinner than the samples' spacing, which the four samples around a pixel mostly miss.
 constexpr float kThinBarDepth = -4.0f;
@@ -91,10 +99,7 @@ scene::SceneDesc thinBarsScene() {
   const uint32_t bar = builder.mesh(game::primitives::box({0.6f * kSampleAtThinBars, 2.0f, 0.05f}));
   for (int i = -12; i <= 12; ++i)
     builder.instance(bar, dark, at({3.3f * kSampleAtThinBars * float(i), 0.0f, kThinBarDepth}));
-  scene::LightDesc lamp;
-  lamp.position = glm::vec3(0.0f, 2.0f, 0.0f);
-  lamp.intensity = 20.0f;
-  builder.light(lamp);
+  lampAboveTheCamera(builder);
   return builder.scene;
 }
 
@@ -108,20 +113,24 @@ scene::SceneDesc barsScene() {
   const uint32_t bar = builder.mesh(game::primitives::box({width, 20.0f, 0.1f}));
   for (int i = -40; i <= 40; ++i)
     builder.instance(bar, (i & 1) != 0 ? dark : pale, at({width * float(i), 0.0f, -5.0f}));
-  scene::LightDesc lamp;
-  lamp.position = glm::vec3(0.0f, 2.0f, 0.0f);
-  lamp.intensity = 20.0f;
-  builder.light(lamp);
+  lampAboveTheCamera(builder);
   return builder.scene;
 }
 
 // A grey wall 6 m ahead and before it, 5 m ahead, one instance: a panel of bars one sample wide,
 // pale and dark in turn (one mesh, a material per triangle).
+constexpr float kPanelDepth = -5.0f, kPanelWallDepth = -6.0f;
+
+// The wall's and the panel's transforms, the panel `panelX` to the right.
+std::vector<glm::mat4> slidingPanelTransforms(float panelX) {
+  return {at({0.0f, 0.0f, kPanelWallDepth}), at({panelX, 0.0f, kPanelDepth})};
+}
+
 scene::SceneDesc slidingPanelScene() {
   SceneBuilder builder;
   const uint32_t pale = greyMaterial(builder, 0.8f), dark = greyMaterial(builder, 0.1f);
   builder.instance(builder.mesh(game::primitives::box({60.0f, 20.0f, 0.1f})),
-                   greyMaterial(builder, 0.3f), at({0.0f, 0.0f, -6.0f}));
+                   greyMaterial(builder, 0.3f), slidingPanelTransforms(0.0f)[0]);
   scene::MeshData panel;
   for (int i = -40; i <= 40; ++i) {
     const scene::MeshData bar = game::primitives::box({kSampleAtBars, 20.0f, 0.1f});
@@ -134,12 +143,9 @@ scene::SceneDesc slidingPanelScene() {
     panel.triangleMaterials.insert(panel.triangleMaterials.end(), bar.indices.size() / 3,
                                    (i & 1) != 0 ? 1u : 0u);
   }
-  builder.instance(builder.mesh(panel), pale, at({0.0f, 0.0f, -5.0f}));
+  builder.instance(builder.mesh(panel), pale, slidingPanelTransforms(0.0f)[1]);
   builder.scene.instances.back().meshMaterials = {pale, dark};
-  scene::LightDesc lamp;
-  lamp.position = glm::vec3(0.0f, 2.0f, 0.0f);
-  lamp.intensity = 20.0f;
-  builder.light(lamp);
+  lampAboveTheCamera(builder);
   return builder.scene;
 }
 
@@ -349,18 +355,15 @@ TEST_F(TemporalUpscaleTest, a_panel_sliding_past_a_still_camera_keeps_16_frames_
   const uint32_t frames = 64;
   const scene::SceneDesc scene = slidingPanelScene();
   auto sliding = upscaler(scene), held = upscaler(scene);
+  const float endX = step * float(frames - 1);
   for (uint32_t frame = 0; frame < frames; ++frame) {
-    const std::vector<glm::mat4> slid = {at({0.0f, 0.0f, -6.0f}),
-                                         at({step * float(frame), 0.0f, -5.0f})};
-    const std::vector<glm::mat4> stopped = {at({0.0f, 0.0f, -6.0f}),
-                                            at({step * float(frames - 1), 0.0f, -5.0f})};
-    sliding->setInstanceTransforms(slid);
-    held->setInstanceTransforms(stopped);
+    sliding->setInstanceTransforms(slidingPanelTransforms(step * float(frame)));
+    held->setInstanceTransforms(slidingPanelTransforms(endX));
     sliding->renderFrame(frameAt(frame));
     held->renderFrame(frameAt(frame));
   }
   scene::SceneDesc ended = scene;
-  ended.instances[1].objectToWorld = at({step * float(frames - 1), 0.0f, -5.0f});
+  ended.instances[1].objectToWorld = slidingPanelTransforms(endX)[1];
   const std::vector<float> expected = reference(ended, 0.0f);
   const double slidingError = render::rootMeanSquareError(expected, green(sliding->pixels()));
   const double heldError = render::rootMeanSquareError(expected, green(held->pixels()));
