@@ -12,6 +12,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "render/barriers.hpp"
+#include "render/blue_noise.hpp"
 #include "render/bvh_order.hpp"
 #include "render/context.hpp"
 #include "render/gpu_types.hpp"
@@ -375,6 +376,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light routes");
   const gpu::LightRoutesHeader noRoutes{};
   lightRoutes_.write(&noRoutes, sizeof noRoutes);
+  const std::vector<uint32_t>& sampleNoise = softShadowSampleNoise();
+  sampleNoise_ = Buffer(context, sampleNoise.size() * sizeof(uint32_t),
+                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "sample noise");
+  sampleNoise_.write(sampleNoise.data(), sampleNoise.size() * sizeof(uint32_t));
   createDescriptors();
   createPipelines(compiler, features, scene.exposureProbes);
 
@@ -411,7 +416,7 @@ void Renderer::destroyHandles() {
 
 void Renderer::createDescriptors() {
   VkDevice device = context_.device();
-  const std::array<std::pair<uint32_t, VkDescriptorType>, 15> bindings = {{
+  const std::array<std::pair<uint32_t, VkDescriptorType>, 16> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_GLASS_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
@@ -427,6 +432,7 @@ void Renderer::createDescriptors() {
       {BINDING_PROBE_SETUP, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_LIGHT_ROUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_TRIANGLE_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+      {BINDING_SAMPLE_NOISE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
   }};
   constexpr uint32_t kSets = 2;
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
@@ -481,7 +487,7 @@ void Renderer::createDescriptors() {
   VkAccelerationStructureKHR glassTlas = glassLevel_ ? glassLevel_->structure().handle() : tlas;
   VkWriteDescriptorSetAccelerationStructureKHR glassTlasWrite = tlasWrite;
   glassTlasWrite.pAccelerationStructures = &glassTlas;
-  const std::array<std::pair<uint32_t, const Buffer*>, 11> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 12> buffers = {{
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -493,6 +499,7 @@ void Renderer::createDescriptors() {
       {BINDING_PROBE_SETUP, &probeSetup_},
       {BINDING_LIGHT_ROUTES, &lightRoutes_},
       {BINDING_TRIANGLE_MATERIALS, &triangleMaterials_},
+      {BINDING_SAMPLE_NOISE, &sampleNoise_},
   }};
   std::vector<VkDescriptorImageInfo> textureInfos;
   for (const auto& texture : textures_)

@@ -216,6 +216,7 @@ class Renderer {
   Buffer paths_;
   Buffer probeSetup_;
   Buffer lightRoutes_;
+  Buffer sampleNoise_;          // blue_noise.hpp's softShadowSampleNoise()
   Buffer triangleMaterials_;    // scene material per triangle of instances of several materials
   bool routeLight_ = false;     // the variant routes light by mirrors
   uint32_t mirrorBounces_ = 0;  // the most a camera path or a light route takes (the cap)

@@ -1,21 +1,29 @@
 // Low-discrepancy numbers and light sampling for soft shadows.
 
 // R2 sequence (Roberts' generalised golden ratio) in 32-bit fixed point, so frame counts of
-// any size stay exact; the per-pixel start is the same sequence over pixel coordinates, which
-// spreads the error like blue noise. Deterministic in pixel, frame and dimension.
+// any size stay exact: each pixel's numbers go on along it from a start of the pixel's own.
+// Deterministic in pixel, frame and dimension.
 const uint R2_A1 = 3242174889u;  // 0.7548776662... * 2^32
 const uint R2_A2 = 2447445413u;  // 0.5698402909... * 2^32
 const uint GOLDEN = 2654435769u;  // 0.6180339887... * 2^32
 
 float fixedToUnit(uint value) { return float(value >> 8) * (1.0 / 16777216.0); }
 
-vec3 sampleNumbers(uvec2 pixel, uint frame) {
-  uint pixelStart1 = pixel.x * R2_A1 + pixel.y * R2_A2;
-  uint pixelStart2 = pixel.x * R2_A2 + pixel.y * R2_A1 + 0x9E3779B9u;
-  uint pixelStart3 = (pixel.x * 7919u + pixel.y * 104729u) * GOLDEN;
-  return vec3(fixedToUnit(pixelStart1 + frame * R2_A1), fixedToUnit(pixelStart2 + frame * R2_A2),
-              fixedToUnit(pixelStart3 + frame * GOLDEN));
+vec3 sequenceFrom(uvec3 start, uint frame) {
+  return vec3(fixedToUnit(start.x + frame * R2_A1), fixedToUnit(start.y + frame * R2_A2),
+              fixedToUnit(start.z + frame * GOLDEN));
 }
+
+// Starts that are the same sequence over the pixel's coordinates: a lattice, which spreads the
+// samples of any neighbourhood over the light evenly in all three dimensions at once, so that
+// the errors of neighbouring pixels cancel where the denoiser averages them.
+uvec3 latticeStart(uvec2 pixel) {
+  return uvec3(pixel.x * R2_A1 + pixel.y * R2_A2, pixel.x * R2_A2 + pixel.y * R2_A1 + 0x9E3779B9u,
+               (pixel.x * 7919u + pixel.y * 104729u) * GOLDEN);
+}
+
+// The probes' numbers, over the probe's sample and probe index.
+vec3 sampleNumbers(uvec2 pixel, uint frame) { return sequenceFrom(latticeStart(pixel), frame); }
 
 // An orthonormal basis around a unit vector (branch-free construction).
 void basisAround(vec3 n, out vec3 tangent, out vec3 bitangent) {

@@ -82,6 +82,11 @@ using uint = uint32_t;
 // of the whole scene's structure to reject every opaque instance by its mask cost a quarter of
 // a glass level's frame.
 #define BINDING_GLASS_TLAS 36
+// A storage buffer: the soft shadows' per-pixel starts of their sample numbers, one word a texel
+// of a SAMPLE_NOISE_SIZE-square tile (render/blue_noise.hpp says how three blue-noise maps are
+// packed in it; shaders/sample_noise.glsl, blueNoiseStart, reads it).
+#define BINDING_SAMPLE_NOISE 37
+#define SAMPLE_NOISE_SIZE 64u
 // The upscaler's history cap in frames without upscaling (plain TAA); upscaled by k a side the
 // cap comes to this times k^4 frames, so a still view keeps averaging (temporal_upscale.glsl).
 #define UPSCALE_MAX_HISTORY_FRAMES 32.0

@@ -169,10 +169,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // read.
   vec2 previous = vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale *
                                       kMotionGrid) / kMotionGrid;
-  bool cameraStill = frame.previousCameraPosition.xyz == vec3(0.0) &&
-                     frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
-                     frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
-                     frame.previousCameraForward.xyz == frame.cameraForward.xyz;
+  bool cameraStill = cameraHeldStill();
   // What the pixel shows moves: the camera does, or the instance the pixel shows.
   bool pointMoves = !cameraStill || instanceMoved(seenInstance);
   if (!pointMoves) {

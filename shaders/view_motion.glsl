@@ -27,6 +27,15 @@ vec3 projectToPreviousView(vec3 point) {
               length(offset));
 }
 
+// Whether the camera is where it was in the previous frame, turned the same way (the upscaler's
+// jitter aside): the previous camera's position in this frame's render space is its origin.
+bool cameraHeldStill() {
+  return frame.previousCameraPosition.xyz == vec3(0.0) &&
+         frame.previousCameraRight.xyz == frame.cameraRight.xyz &&
+         frame.previousCameraUp.xyz == frame.cameraUp.xyz &&
+         frame.previousCameraForward.xyz == frame.cameraForward.xyz;
+}
+
 // Whether the instance `instancePlusOne` - 1 moved since the previous frame (0: none, which
 // did not). Most frames nothing moved: then the instances' motion is not read (in the
 // upscaler's resolve on lavapipe these reads were a fifth of the pass).
