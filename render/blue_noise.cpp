@@ -101,7 +101,8 @@ std::vector<uint32_t> blueNoiseRanks(uint32_t size, uint64_t seed) {
   }
 
   std::vector<uint32_t> ranks(texels, 0);
-  // Ranks below the starting pattern's count: its points, tightest cluster first removed last.
+  // The ranks below the starting pattern's count go to its points from the top down: each next
+  // lower rank to the tightest cluster left, which is then taken out.
   PatternEnergy fewer = start;
   for (size_t rank = initial; rank-- > 0;) {
     const size_t cluster = fewer.tightestCluster();

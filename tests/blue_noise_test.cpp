@@ -1,6 +1,7 @@
 // The blue-noise tiles behind the soft shadows' per-pixel sample numbers.
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 
 #include <gtest/gtest.h>
