@@ -376,10 +376,17 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "light routes");
   const gpu::LightRoutesHeader noRoutes{};
   lightRoutes_.write(&noRoutes, sizeof noRoutes);
-  const std::vector<uint32_t>& sampleNoise = softShadowSampleNoise();
-  sampleNoise_ = Buffer(context, sampleNoise.size() * sizeof(uint32_t),
-                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::Upload, "sample noise");
-  sampleNoise_.write(sampleNoise.data(), sampleNoise.size() * sizeof(uint32_t));
+  // The tiles are made (once per process) only for a variant with soft shadows, the one that
+  // reads them; any other binds zeros.
+  const size_t sampleNoiseBytes = size_t(SAMPLE_NOISE_SIZE) * SAMPLE_NOISE_SIZE * sizeof(uint32_t);
+  sampleNoise_ = Buffer(context, sampleNoiseBytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                        MemoryUse::Upload, "sample noise");
+  if (features.softShadows) {
+    sampleNoise_.write(softShadowSampleNoise().data(), sampleNoiseBytes);
+  } else {
+    const std::vector<uint32_t> zeros(sampleNoiseBytes / sizeof(uint32_t), 0u);
+    sampleNoise_.write(zeros.data(), sampleNoiseBytes);
+  }
   createDescriptors();
   createPipelines(compiler, features, scene.exposureProbes);
 
