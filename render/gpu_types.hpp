@@ -12,14 +12,14 @@ static_assert(sizeof(GpuMaterial) == 128 + 32 * TEXTURE_ROLES);
 static_assert(offsetof(GpuMaterial, kindShading) == 64);
 static_assert(offsetof(GpuMaterial, textureTransforms) == 128);
 static_assert(offsetof(GpuMaterial, emissiveRoughness) == 16);
-static_assert(sizeof(GpuLight) == 64);
+static_assert(sizeof(GpuLight) == 80);
 static_assert(offsetof(GpuLight, radianceRadius) == 32);
 static_assert(sizeof(FrameCounters) == 16);
 static_assert(sizeof(ProbeSetup) == 16 * (1 + MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 static_assert(sizeof(ProbePoint) == 32);
 static_assert(sizeof(GpuRouteMirror) == 64);
-static_assert(sizeof(GpuLightRoute) == 64 + 48 + 64 * MAX_ROUTE_MIRRORS);
-static_assert(offsetof(GpuLightRoute, mirrors) == 112);
+static_assert(sizeof(GpuLightRoute) == 80 + 48 + 64 * MAX_ROUTE_MIRRORS);
+static_assert(offsetof(GpuLightRoute, mirrors) == 128);
 static_assert(sizeof(LightRoutesHeader) == 16);
 static_assert(sizeof(ProbeResults) == 4 * (MAX_FOCUS_PROBES + MAX_EXPOSURE_PROBES));
 }  // namespace render::gpu

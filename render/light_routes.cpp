@@ -85,6 +85,7 @@ PartialRoute extended(const PartialRoute& partial, const MirrorFace& face, uint3
   gpu::GpuLight& image = route.image;
   image.positionType =
       glm::vec4(reflectPoint(face, glm::vec3(image.positionType)), image.positionType.w);
+  image.previousPosition = glm::vec4(reflectPoint(face, glm::vec3(image.previousPosition)), 0.0f);
   image.directionEnabled = glm::vec4(reflectDirection(face, glm::vec3(image.directionEnabled)),
                                      image.directionEnabled.w);
   image.radianceRadius =

@@ -138,7 +138,8 @@ gpu::GpuLight toGpuLight(const scene::LightDesc& light) {
   return {glm::vec4(light.position, static_cast<float>(light.type)),
           glm::vec4(direction, light.enabled ? 1.0f : 0.0f),
           glm::vec4(light.color * light.intensity, light.radius),
-          glm::vec4(light.size, light.angularDiameterRadians, 0.0f)};
+          glm::vec4(light.size, light.angularDiameterRadians, 0.0f),
+          glm::vec4(light.position, 0.0f)};
 }
 
 }  // namespace
@@ -253,6 +254,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
     lightRadiances_.push_back(glm::vec3(gpuLights_.back().radianceRadius));
     lightPositions_.push_back(light.position);
   }
+  lightPreviousPositions_ = lightPositions_;
+  lightHistoryPositions_ = lightPositions_;
   lightCount_ = static_cast<uint32_t>(gpuLights_.size());
 
   vertices_ = makeStorage(context, allVertices, kGeometryUsage, "vertices");
@@ -644,6 +647,23 @@ void Renderer::writeInstanceMotion(bool fullFrame) {
   historyTransforms_ = currentTransforms_;
 }
 
+// A full frame also gets where each light was at the last full frame, the motion of a light
+// seen (the light's point carried by its centre's move): identity again once the lights stop.
+void Renderer::writeLightMotion(bool fullFrame) {
+  if (!fullFrame || (!lightsMovedSinceHistory_ && !lightsMoved_)) return;
+  lightPreviousPositions_ = lightsMovedSinceHistory_ ? lightHistoryPositions_ : lightPositions_;
+  for (size_t i = 0; i < gpuLights_.size(); ++i) {
+    const glm::vec3 previous = renderOrigin_
+                                   ? toRenderSpace(lightPreviousPositions_[i], *renderOrigin_)
+                                   : lightPreviousPositions_[i];
+    gpuLights_[i].previousPosition = glm::vec4(previous, 0.0f);
+  }
+  lights_.write(gpuLights_.data(), gpuLights_.size() * sizeof(gpuLights_[0]));
+  lightsMoved_ = lightsMovedSinceHistory_;
+  lightsMovedSinceHistory_ = false;
+  lightHistoryPositions_ = lightPositions_;
+}
+
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
   Buffer staging(context_, paths_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
                  "pixel paths readback");
@@ -736,6 +756,8 @@ void Renderer::moveRenderOrigin(const glm::dvec3& origin) {
   for (size_t i = 0; i < gpuLights_.size(); ++i) {
     gpuLights_[i].positionType =
         glm::vec4(toRenderSpace(lightPositions_[i], origin), gpuLights_[i].positionType.w);
+    gpuLights_[i].previousPosition =
+        glm::vec4(toRenderSpace(lightPreviousPositions_[i], origin), 0.0f);
   }
   if (!gpuLights_.empty())
     lights_.write(gpuLights_.data(), gpuLights_.size() * sizeof(gpuLights_[0]));
@@ -815,6 +837,7 @@ void Renderer::setLightPose(uint32_t light, const glm::vec3& position, const glm
   if (lightPositions_[light] == position && !turned) return;
   sceneChanged_ = true;
   lightPositions_[light] = position;
+  lightsMovedSinceHistory_ = true;
   const glm::vec3 origin = renderOrigin_ ? toRenderSpace(position, *renderOrigin_) : position;
   gpuLights_[light].positionType = glm::vec4(origin, gpuLights_[light].positionType.w);
   if (glm::length(direction) > 0.0f) {
@@ -879,8 +902,9 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.previousCameraForward = previous.cameraForward;
   uniforms.previousSize =
       glm::uvec4(previous.sizeFrameLights.x, previous.sizeFrameLights.y, 0u, 0u);
-  uniforms.denoise = glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u,
-                                denoiserIterations(frame), instancesMoved_ ? 1u : 0u);
+  uniforms.denoise =
+      glm::uvec4(reset ? 1u : 0u, frame.referenceAccumulation ? 1u : 0u, denoiserIterations(frame),
+                 instancesMoved_ || lightsMoved_ ? 1u : 0u);
   if (probeOnly) {  // un-jittered, launched over the focus regions' box
     uniforms.probeLaunch =
         focusBox_ ? glm::uvec4(focusBox_->x0, focusBox_->y0, 1u, 0u) : glm::uvec4(0u, 0u, 1u, 0u);
@@ -1076,6 +1100,7 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   if (!probeOnly) lastIterations_ = denoiserIterations(frame);
   moveRenderOrigin(glm::dvec3(frame.camera.position));
   writeInstanceMotion(!probeOnly);
+  writeLightMotion(!probeOnly);
   writeLightRoutes();
   writeFrameUniforms(frame, probeOnly);
 

@@ -190,6 +190,7 @@ class Renderer {
   void moveRenderOrigin(const glm::dvec3& origin);
   void writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly);
   void writeInstanceMotion(bool fullFrame);
+  void writeLightMotion(bool fullFrame);
   void writeProbePoints();
   void writeLightRoutes();
   uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
@@ -241,6 +242,12 @@ class Renderer {
   uint64_t tlasUpdates_ = 0;
   std::vector<gpu::GpuLight> gpuLights_;   // render space (positions relative to the origin)
   std::vector<glm::vec3> lightPositions_;  // world space
+  // World space: where the lights were at the last full frame, and what the GPU's lights hold
+  // as their previous positions.
+  std::vector<glm::vec3> lightHistoryPositions_;
+  std::vector<glm::vec3> lightPreviousPositions_;
+  bool lightsMovedSinceHistory_ = false;   // a light moved since the last full frame
+  bool lightsMoved_ = false;               // the last full frame's light motion was not identity
   std::vector<glm::vec3> lightRadiances_;  // as the level made them, before any tint
   std::vector<std::unique_ptr<Texture>> textures_;
   VkSampler sampler_ = VK_NULL_HANDLE;

@@ -128,6 +128,11 @@ using uint = uint32_t;
 // What a pixel's final path reached, written by ray-gen for tests and probes.
 #define PATH_REACHED_NOTHING 0xFFFFFFFFu
 
+// The upscaler's name for what a pixel shows (its motion's w, its history's z): the instance + 1
+// (0: none), or for an area light seen, SEEN_LIGHT_BASE + the light's index (below 2^24, so
+// exact as a float).
+#define SEEN_LIGHT_BASE 0x800000u
+
 #define TONEMAP_IDENTITY 0u
 #define TONEMAP_ACES 1u
 
@@ -148,8 +153,9 @@ struct FrameUniforms {
   vec4 previousCameraRight;
   vec4 previousCameraUp;
   vec4 previousCameraForward;
-  // x: reset history, y: reference accumulation, z: filter iterations, w: 1 if an instance may
-  // have moved since the last full frame (else every previousFromCurrent is the identity)
+  // x: reset history, y: reference accumulation, z: filter iterations, w: 1 if an instance or a
+  // light may have moved since the last full frame (else every previousFromCurrent is the
+  // identity and every light's previousPosition its position)
   uvec4 denoise;
   // A probe-only frame (z: 1) traces just the focus regions' box, whose top-left pixel is xy,
   // and finds what each path reaches without shading it or writing any image.
@@ -216,6 +222,9 @@ struct GpuLight {
   vec4 directionEnabled;  // xyz: unit direction (light travel / emitting side), w: 1 if on
   vec4 radianceRadius;    // rgb: colour * intensity (unit by type), w: radius
   vec4 extent;            // xy: rectangle size, z: angular diameter in radians
+  // xyz: where the light was at the previous full frame (render space), for the upscaler's
+  // motion of a light seen (the same as positionType.xyz unless it moved).
+  vec4 previousPosition;
 };
 
 // Counters the ray-gen shader adds into; integers so sums do not depend on order. Pixels

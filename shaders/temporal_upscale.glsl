@@ -17,6 +17,7 @@ layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUnifo
 layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
   GpuInstance instances[];
 };
+layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBlock { GpuLight lights[]; };
 // The tonemap's output at the render size.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
 // Ray-gen's motion: where each sample's point was in the previous frame (ray-gen's

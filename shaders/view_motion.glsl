@@ -1,6 +1,6 @@
 // This frame's camera rays, and where points and instances were in the previous frame: ray-gen
 // gives every surface's motion with these, and the upscaler's resolve finds a mirror's outline
-// again (temporal_upscale.glsl). Include it after `frame` and `instances` are declared.
+// again (temporal_upscale.glsl). Include it after `frame`, `instances` and `lights` are declared.
 #ifndef VIEW_MOTION_GLSL
 #define VIEW_MOTION_GLSL
 
@@ -36,11 +36,15 @@ bool cameraHeldStill() {
          frame.previousCameraForward.xyz == frame.cameraForward.xyz;
 }
 
-// Whether the instance `instancePlusOne` - 1 moved since the previous frame (0: none, which
-// did not). Most frames nothing moved: then the instances' motion is not read (in the
-// upscaler's resolve on lavapipe these reads were a fifth of the pass).
+// Whether the instance `instancePlusOne` - 1 (or the light SEEN_LIGHT_BASE names) moved since the
+// previous frame (0: none, which did not). Most frames nothing moved: then the instances' motion
+// is not read (in the upscaler's resolve on lavapipe these reads were a fifth of the pass).
 bool instanceMoved(uint instancePlusOne) {
   if (frame.denoise.w == 0u || instancePlusOne == 0u) return false;
+  if (instancePlusOne >= SEEN_LIGHT_BASE) {
+    GpuLight light = lights[instancePlusOne - SEEN_LIGHT_BASE];
+    return light.previousPosition.xyz != light.positionType.xyz;
+  }
   vec4 rows[3] = instances[instancePlusOne - 1u].previousFromCurrent;
   return rows[0] != vec4(1.0, 0.0, 0.0, 0.0) || rows[1] != vec4(0.0, 1.0, 0.0, 0.0) ||
          rows[2] != vec4(0.0, 0.0, 1.0, 0.0);

@@ -150,7 +150,7 @@ TEST(LightRoutesGeometry, two_facing_mirrors_chain_and_a_light_behind_a_mirror_h
   render::MirrorFace left{{1, 0, 0}, {-1, 0, 0}, {0, 0.5f, 0}, {0, 0, 0.5f}, glm::vec3(0.5f)};
   render::MirrorFace right{{-1, 0, 0}, {1, 0, 0}, {0, 0.5f, 0}, {0, 0, 0.5f}, glm::vec3(0.5f)};
   render::gpu::GpuLight light{glm::vec4(0, 0, 0, float(LIGHT_POINT)), glm::vec4(0, -1, 0, 1),
-                              glm::vec4(1, 1, 1, 0), glm::vec4(0)};
+                              glm::vec4(1, 1, 1, 0), glm::vec4(0), glm::vec4(0)};
   const std::vector<render::MirrorFace> faces = {left, right};
   const std::vector<render::gpu::GpuLightRoute> routes =
       render::findLightRoutes(faces, std::span(&light, 1), 3);
