@@ -293,6 +293,10 @@ class TemporalUpscaleTest : public test::VulkanTest {
     return trail;
   }
 
+  // A shape sliding one render pixel (at the box's depth) to the right a frame: its x at `frame`.
+  static constexpr uint32_t kSlideFrames = 16;
+  static float slidTo(uint32_t frame) { return -0.8f + renderPixelAt(-kBoxDepth) * float(frame); }
+
   static void moveBox(render::Renderer& renderer, float boxX) {
     const std::vector<glm::mat4> transforms = {at({0.0f, 0.0f, -5.0f}),
                                                at({boxX, 0.0f, kBoxDepth})};
@@ -319,15 +323,12 @@ TEST_F(TemporalUpscaleTest, the_output_is_the_output_size_and_a_static_view_conv
 
 TEST_F(TemporalUpscaleTest, a_moving_box_leaves_no_trail_longer_than_2_output_pixels) {
   // The box slides one render pixel (4 output pixels) to the right a frame for 16 frames.
-  const float pixelAtBox = renderPixelAt(-kBoxDepth);
-  const auto boxAt = [&](uint32_t frame) { return -0.8f + pixelAtBox * float(frame); };
-  auto renderer = upscaler(boxScene(boxAt(0)));
-  const uint32_t frames = 16;
-  for (uint32_t frame = 0; frame < frames; ++frame) {
-    moveBox(*renderer, boxAt(frame));
+  auto renderer = upscaler(boxScene(slidTo(0)));
+  for (uint32_t frame = 0; frame < kSlideFrames; ++frame) {
+    moveBox(*renderer, slidTo(frame));
     renderer->renderFrame(frameAt(frame));
   }
-  const Trail trail = trailBehind(green(renderer->pixels()), reference(boxAt(frames - 1)));
+  const Trail trail = trailBehind(green(renderer->pixels()), reference(slidTo(kSlideFrames - 1)));
   EXPECT_GT(trail.rows, 5);
   EXPECT_LE(trail.longest, 2);
 }
@@ -337,16 +338,13 @@ TEST_F(TemporalUpscaleTest, a_moving_lamp_leaves_no_trail_longer_than_2_output_p
   // pixels follows where the light was at the previous frame, and what it uncovers drops the
   // lamp's history as a moving instance's. 1 output pixel; with the sky's motion for a light
   // seen, as before session 30, 5.
-  const float pixelAtLamp = renderPixelAt(-kBoxDepth);
-  const auto lampAt = [&](uint32_t frame) { return -0.8f + pixelAtLamp * float(frame); };
-  auto renderer = upscaler(lampScene(lampAt(0)));
-  const uint32_t frames = 16;
-  for (uint32_t frame = 0; frame < frames; ++frame) {
-    renderer->setLightPose(kLampLight, glm::vec3(lampAt(frame), 0.0f, kBoxDepth), glm::vec3(0.0f));
+  auto renderer = upscaler(lampScene(slidTo(0)));
+  for (uint32_t frame = 0; frame < kSlideFrames; ++frame) {
+    renderer->setLightPose(kLampLight, lampAt(slidTo(frame)).position, glm::vec3(0.0f));
     renderer->renderFrame(frameAt(frame));
   }
   const Trail trail =
-      trailBehind(green(renderer->pixels()), reference(lampScene(lampAt(frames - 1)), 0.0f));
+      trailBehind(green(renderer->pixels()), reference(lampScene(slidTo(kSlideFrames - 1)), 0.0f));
   EXPECT_GT(trail.rows, 5);
   EXPECT_LE(trail.longest, 2);
 }
