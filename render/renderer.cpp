@@ -167,6 +167,10 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       options.height > 16384) {
     throw RenderError("image size must be between 1x1 and 16384x16384");
   }
+  // The upscaler names what a pixel shows by its instance + 1, or by SEEN_LIGHT_BASE + a light.
+  if (scene.instances.size() >= SEEN_LIGHT_BASE || scene.lights.size() >= SEEN_LIGHT_BASE)
+    throw RenderError("a scene has at most " + std::to_string(SEEN_LIGHT_BASE - 1) +
+                      " instances and as many lights");
   // One vertex and index buffer for all meshes; each instance records where its mesh starts.
   std::vector<scene::Vertex> allVertices;
   std::vector<uint32_t> allIndices;
