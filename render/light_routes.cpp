@@ -85,7 +85,6 @@ PartialRoute extended(const PartialRoute& partial, const MirrorFace& face, uint3
   gpu::GpuLight& image = route.image;
   image.positionType =
       glm::vec4(reflectPoint(face, glm::vec3(image.positionType)), image.positionType.w);
-  image.previousPosition = glm::vec4(reflectPoint(face, glm::vec3(image.previousPosition)), 0.0f);
   image.directionEnabled = glm::vec4(reflectDirection(face, glm::vec3(image.directionEnabled)),
                                      image.directionEnabled.w);
   image.radianceRadius =
@@ -118,6 +117,9 @@ std::vector<gpu::GpuLightRoute> findLightRoutes(std::span<const MirrorFace> face
     if (lights[light].directionEnabled.w == 0.0f) continue;  // switched off: no slot taken
     PartialRoute start;
     start.route.image = lights[light];
+    // Only a light seen has motion (the upscaler's); an image's stays zero, so a light's
+    // motion alone does not change the routes.
+    start.route.image.previousPosition = glm::vec4(0.0f);
     start.route.lightMirrors = glm::uvec4(light, 0, 0, 0);
     start.route.tint = glm::vec4(1.0f);
     start.route.imageTangent =

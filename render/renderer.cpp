@@ -840,8 +840,9 @@ void Renderer::setLightPose(uint32_t light, const glm::vec3& position, const glm
                       glm::vec3(gpuLights_[light].directionEnabled) != glm::normalize(direction);
   if (lightPositions_[light] == position && !turned) return;
   sceneChanged_ = true;
+  // A turn alone is not motion: a light seen moves with its centre (writeLightMotion).
+  if (lightPositions_[light] != position) lightsMovedSinceHistory_ = true;
   lightPositions_[light] = position;
-  lightsMovedSinceHistory_ = true;
   const glm::vec3 origin = renderOrigin_ ? toRenderSpace(position, *renderOrigin_) : position;
   gpuLights_[light].positionType = glm::vec4(origin, gpuLights_[light].positionType.w);
   if (glm::length(direction) > 0.0f) {

@@ -223,7 +223,8 @@ struct GpuLight {
   vec4 radianceRadius;    // rgb: colour * intensity (unit by type), w: radius
   vec4 extent;            // xy: rectangle size, z: angular diameter in radians
   // xyz: where the light was at the previous full frame (render space), for the upscaler's
-  // motion of a light seen (the same as positionType.xyz unless it moved).
+  // motion of a light seen (the same as positionType.xyz unless it moved; zero in a light
+  // route's image).
   vec4 previousPosition;
 };
 

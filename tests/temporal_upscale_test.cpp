@@ -532,6 +532,24 @@ TEST_F(TemporalUpscaleTest,
   EXPECT_EQ(steadyAfterFrame(), 0u);
 }
 
+TEST_F(TemporalUpscaleTest, a_light_that_stopped_lets_the_scene_count_as_steady_again) {
+  // A light seen moves with the motion the renderer keeps for it; once the light stops, that
+  // motion goes back to none, which is no change of the scene (nor of the light's routes via the
+  // mirror, which do not carry it).
+  auto renderer = upscaler(mirrorScene());
+  uint32_t frame = 0;
+  auto steadyAfterFrame = [&] {
+    renderer->renderFrame(frameAt(frame++), false);
+    return renderer->steadyFrames();
+  };
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  renderer->setLightPose(0, glm::vec3(0.5f, 2.5f, -4.0f), glm::vec3(0.0f));
+  EXPECT_EQ(steadyAfterFrame(), 0u);
+  EXPECT_EQ(steadyAfterFrame(), 1u);
+  EXPECT_EQ(steadyAfterFrame(), 2u);
+}
+
 TEST_F(TemporalUpscaleTest, a_still_view_shows_a_change_of_the_scene_as_a_fresh_view_does) {
   // 40 still frames, the history unclamped since the scene has held, then the light on the
   // wall goes out: the frames after the change clamp again, so the lit wall does not linger.
