@@ -53,7 +53,7 @@ scene::SceneDesc boxScene(float boxX) {
   return builder.scene;
 }
 
-// A lamp (a sphere light, seen as its own white) 0.4 m across where the box is, and what lights
+// A lamp (a sphere light, seen as its own white) 0.8 m across where the box is, and what lights
 // the wall; `lampX` as the box's x. The sphere is the scene's light kLampLight.
 constexpr uint32_t kLampLight = 1;
 
