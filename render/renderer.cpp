@@ -656,12 +656,10 @@ void Renderer::writeInstanceMotion(bool fullFrame) {
 void Renderer::writeLightMotion(bool fullFrame) {
   if (!fullFrame || (!lightsMovedSinceHistory_ && !lightsMoved_)) return;
   lightPreviousPositions_ = lightsMovedSinceHistory_ ? lightHistoryPositions_ : lightPositions_;
-  for (size_t i = 0; i < gpuLights_.size(); ++i) {
-    const glm::vec3 previous = renderOrigin_
-                                   ? toRenderSpace(lightPreviousPositions_[i], *renderOrigin_)
-                                   : lightPreviousPositions_[i];
-    gpuLights_[i].previousPosition = glm::vec4(previous, 0.0f);
-  }
+  // After moveRenderOrigin, so render space is this frame's.
+  for (size_t i = 0; i < gpuLights_.size(); ++i)
+    gpuLights_[i].previousPosition =
+        glm::vec4(toRenderSpace(lightPreviousPositions_[i], *renderOrigin_), 0.0f);
   lights_.write(gpuLights_.data(), gpuLights_.size() * sizeof(gpuLights_[0]));
   lightsMoved_ = lightsMovedSinceHistory_;
   lightsMovedSinceHistory_ = false;
