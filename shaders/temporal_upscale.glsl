@@ -1,10 +1,11 @@
 // Temporal upscaling (TAAU): this frame's jittered picture at the render size is accumulated
 // into a history at the output size, which follows the motion ray-gen wrote (camera, moving
-// instances and lights; in a mirror, the reflection's), is clamped to the range of this frame's
-// samples around it (no ghosts where the view changed) and, while the camera moves, counts for
-// less the further the clamp moved it, where it moves counts for at most 16 frames' worth at 4x,
-// 8 at 2x (each frame's resampling blurs it), and is dropped where a moving instance (or light)
-// was seen before (no trail behind it).
+// instances and lights; in a mirror, the reflection's; between the samples on one surface,
+// interpolated), is clamped to the range of this frame's samples around it (no ghosts where the
+// view changed) and, while the camera moves, counts for less the further the clamp moved it,
+// where it moves counts for at most 16 frames' worth at 4x, 8 at 2x (each frame's resampling
+// blurs it), and is dropped where a moving instance (or light) was seen before (no trail behind
+// it).
 // Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
 // This file resolves one output pixel for the two entry points:
 // temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
@@ -90,6 +91,10 @@ const float kClampedHistoryFloor = 0.1;
 // A panel of bars one sample wide sliding past a still camera for 64 frames at 4x: 2.26x the
 // error of the panel held still without the cap, 1.94x with it.
 const float kMovingHistoryFramesAtLeast = 8.0;
+// Samples of one instance whose distances from the previous camera differ by at most this share
+// show one surface, and their motions are interpolated between them (bench-upscale at 4x: 0.05
+// and 0.2 moved the moving error of none of five levels by more than 0.00003 from 0.1's).
+const float kSameSurfaceDepth = 0.1;
 
 #include "view_motion.glsl"
 
@@ -101,6 +106,12 @@ vec3 previousOfCameraRayPoint(ivec2 renderPixel, vec2 jitter, float distance) {
                                cameraRayDirection(vec2(renderPixel), jitter) * distance);
 }
 #endif
+
+// The render pixel of sample `corner` (0-3: x, then y) of the four around a point, `base` the
+// top-left one's, kept on the picture.
+ivec2 cornerSample(vec2 base, int corner, ivec2 renderSize) {
+  return clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+}
 
 // The share of its weight a moving view's history keeps after the clamp moved it by `moved`.
 float clampedHistoryShare(vec3 moved) {
@@ -128,29 +139,62 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   vec2 scale = vec2(renderSize) / vec2(outputSize);
   vec2 jitter = frame.upscale.xy;
   // Where this pixel's point was in the previous frame, in output pixels: the motion (render
-  // pixels, without this frame's jitter) of whichever of the four samples around it is nearest
-  // in depth (its distance from the previous camera), applied to this pixel. Along a silhouette
-  // the foreground's motion so carries the pixels around its edge, which moves as one piece
-  // instead of splitting into the samples' 4-pixel steps.
+  // pixels, without this frame's jitter) of the surface that whichever of the four samples around
+  // it is nearest in depth (its distance from the previous camera) shows, applied to this pixel.
+  // Along a silhouette the foreground's motion so carries the pixels around its edge, which moves
+  // as one piece instead of splitting into the samples' 4-pixel steps.
   ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
-  vec4 motion = imageLoad(motionImage, nearest);
-  ivec2 motionSample = nearest;
+  vec2 fraction = samplePosition - base;
+  int nearestCorner = int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
+  // Each sample's motion, xy made how far its point moved (render pixels).
+  vec4 cornerMotions[4];
+  vec4 motion = vec4(0.0);
+  for (int corner = 0; corner < 4; ++corner) {
+    ivec2 at = cornerSample(base, corner, renderSize);
+    vec4 cornerMotion = imageLoad(motionImage, at);
+    cornerMotion.xy -= vec2(at) + jitter;
+    cornerMotions[corner] = cornerMotion;
+    if (corner == nearestCorner) motion = cornerMotion;
+  }
+  int chosenCorner = nearestCorner;
 #if HAS_MIRRORS
   float nearestShows = motion.w;
   // The four samples show the same instance, and the same way (a mirror's reflection or not).
   bool oneSurface = true;
 #endif
   for (int corner = 0; corner < 4; ++corner) {
-    ivec2 at = clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
-    if (at == nearest) continue;
-    vec4 candidate = imageLoad(motionImage, at);
+    vec4 candidate = cornerMotions[corner];
 #if HAS_MIRRORS
     oneSurface = oneSurface && candidate.w == nearestShows;
 #endif
     if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
       motion = candidate;
-      motionSample = at;
+      chosenCorner = corner;
     }
+  }
+  // The pixel's point moves as the samples on that surface around it do, their moves
+  // interpolated bilinearly at the pixel. On a surface seen at a slant (a floor, a wall along the
+  // walk) the sample nearest in depth is the one nearest the camera, whose point moves further
+  // than the pixel's: its move alone put the moving picture ahead of where it is (04 Stained
+  // Glass's shadows on the floor by about 1.5 output pixels at 4x; docs/QUALITY.md, session 31).
+  // On one surface: the same instance (or light, or the sky), within kSameSurfaceDepth of the
+  // chosen sample's depth. A reflection keeps its own sample's move: the samples in a mirror show
+  // different things at different depths behind it, while their depths are the mirror's.
+  vec2 displacement = motion.xy;
+  if (motion.w >= 0.0) {
+    vec2 interpolated = vec2(0.0);
+    float weights = 0.0;
+    for (int corner = 0; corner < 4; ++corner) {
+      vec4 candidate = cornerMotions[corner];
+      if (candidate.w != motion.w || candidate.z <= 0.0 ||
+          abs(candidate.z - motion.z) > kSameSurfaceDepth * motion.z)
+        continue;
+      float w = ((corner & 1) != 0 ? fraction.x : 1.0 - fraction.x) *
+                ((corner >> 1) != 0 ? fraction.y : 1.0 - fraction.y);
+      interpolated += w * candidate.xy;
+      weights += w;
+    }
+    if (weights > 0.0) displacement = interpolated / weights;
   }
 #if HAS_MIRRORS
   // A reflection's sample (w < 0): inside the mirror the pixel follows the reflection, whose
@@ -159,7 +203,11 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // reflection's motion there the outline came out in the samples' steps: 19 Last Light moving,
   // docs/QUALITY.md, session 26.)
   if (motion.w < 0.0) {
-    if (!oneSurface) motion.xyz = previousOfCameraRayPoint(motionSample, jitter, motion.z);
+    if (!oneSurface) {
+      ivec2 motionSample = cornerSample(base, chosenCorner, renderSize);
+      motion.xyz = previousOfCameraRayPoint(motionSample, jitter, motion.z);
+      displacement = motion.xy - (vec2(motionSample) + jitter);
+    }
     motion.w = -motion.w;
   }
 #endif
@@ -168,8 +216,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // On a grid of 1/256 output pixel: a still view's motion, rounding left over from projecting
   // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are not
   // read.
-  vec2 previous = vec2(pixel) + round((motion.xy - (vec2(motionSample) + jitter)) / scale *
-                                      kMotionGrid) / kMotionGrid;
+  vec2 previous = vec2(pixel) + round(displacement / scale * kMotionGrid) / kMotionGrid;
   bool cameraStill = cameraHeldStill();
   // What the pixel shows moves: the camera does, or the instance the pixel shows.
   bool pointMoves = !cameraStill || instanceMoved(seenInstance);
