@@ -128,16 +128,22 @@ scene::SceneDesc thinBarsScene() {
   return builder.scene;
 }
 
+// Boxes of `size`, pale and dark in turn, side by side along x: 2 * `count` + 1 of them, the
+// middle one at `centre`.
+void paleAndDarkInTurn(SceneBuilder& builder, glm::vec3 size, int count, glm::vec3 centre) {
+  const uint32_t pale = greyMaterial(builder, 0.8f), dark = greyMaterial(builder, 0.1f);
+  const uint32_t box = builder.mesh(game::primitives::box(size));
+  for (int i = -count; i <= count; ++i)
+    builder.instance(box, (i & 1) != 0 ? dark : pale,
+                     at(centre + glm::vec3(size.x * float(i), 0.0f, 0.0f)));
+}
+
 // Vertical bars 1.5 samples wide, pale and dark in turn, on a wall 5 m ahead.
 const float kSampleAtBars = renderPixelAt(5.0f);
 
 scene::SceneDesc barsScene() {
   SceneBuilder builder;
-  const uint32_t pale = greyMaterial(builder, 0.8f), dark = greyMaterial(builder, 0.1f);
-  const float width = 1.5f * kSampleAtBars;
-  const uint32_t bar = builder.mesh(game::primitives::box({width, 20.0f, 0.1f}));
-  for (int i = -40; i <= 40; ++i)
-    builder.instance(bar, (i & 1) != 0 ? dark : pale, at({width * float(i), 0.0f, -5.0f}));
+  paleAndDarkInTurn(builder, {1.5f * kSampleAtBars, 20.0f, 0.1f}, 40, {0.0f, 0.0f, -5.0f});
   lampAboveTheCamera(builder);
   return builder.scene;
 }
@@ -150,11 +156,7 @@ const float kSampleAtStripes = renderPixelAt(kStripeDepth);
 
 scene::SceneDesc stripedFloorScene() {
   SceneBuilder builder;
-  const uint32_t pale = greyMaterial(builder, 0.8f), dark = greyMaterial(builder, 0.1f);
-  const float width = 4.0f * kSampleAtStripes;
-  const uint32_t stripe = builder.mesh(game::primitives::box({width, 0.1f, 9.0f}));
-  for (int i = -30; i <= 30; ++i)
-    builder.instance(stripe, (i & 1) != 0 ? dark : pale, at({width * float(i), -1.05f, -4.5f}));
+  paleAndDarkInTurn(builder, {4.0f * kSampleAtStripes, 0.1f, 9.0f}, 30, {0.0f, -1.05f, -4.5f});
   builder.instance(builder.mesh(game::primitives::box({40.0f, 20.0f, 0.1f})),
                    greyMaterial(builder, 0.3f), at({0.0f, 0.0f, -9.0f}));
   lampAboveTheCamera(builder);
