@@ -143,9 +143,9 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // it is nearest in depth (its distance from the previous camera) shows, applied to this pixel.
   // Along a silhouette the foreground's motion so carries the pixels around its edge, which moves
   // as one piece instead of splitting into the samples' 4-pixel steps.
-  ivec2 nearest = clamp(ivec2(floor(samplePosition + 0.5)), ivec2(0), renderSize - 1);
   vec2 fraction = samplePosition - base;
   int nearestCorner = int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
+  ivec2 nearest = cornerSample(base, nearestCorner, renderSize);
   // Each sample's motion, xy made how far its point moved (render pixels).
   vec4 cornerMotions[4];
   vec4 motion = vec4(0.0);
@@ -300,8 +300,7 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   float weight = 0.0;
   for (int corner = 0; corner < 4; ++corner) {
     ivec2 offset = ivec2(corner & 1, corner >> 1);
-    ivec2 at = clamp(ivec2(base) + offset, ivec2(0), renderSize - 1);
-    vec3 colour = imageLoad(currentImage, at).rgb;
+    vec3 colour = imageLoad(currentImage, cornerSample(base, corner, renderSize)).rgb;
     corners[corner] = colour;
     low = min(low, colour);
     high = max(high, colour);
