@@ -92,9 +92,12 @@ const float kClampedHistoryFloor = 0.1;
 // error of the panel held still without the cap, 1.94x with it.
 const float kMovingHistoryFramesAtLeast = 8.0;
 // Samples of one instance whose distances from the previous camera differ by at most this share
-// show one surface, and their motions are interpolated between them (bench-upscale at 4x on
-// five levels: moving after 32 frames within 0.00003 of 0.1's with 0.05 and with 0.2).
-const float kSameSurfaceDepth = 0.1;
+// show one surface: their motions are interpolated between them, and continued past them towards
+// a silhouette. 0.3 rather than 0.1: a side face seen at a slant, a few samples wide, changes
+// its depth by more than a tenth from one sample to the next (the strafing box test: 1.48x the
+// still view's error with 0.1, 1.33x with 0.3, the same with 0.5; bench-upscale at 4x, moving
+// after 32 frames within 0.00005 of 0.3's with 0.1 and with 0.5 on four levels).
+const float kSameSurfaceDepth = 0.3;
 
 #include "view_motion.glsl"
 
@@ -111,6 +114,13 @@ vec3 previousOfCameraRayPoint(ivec2 renderPixel, vec2 jitter, float distance) {
 // top-left one's, kept on the picture.
 ivec2 cornerSample(vec2 base, int corner, ivec2 renderSize) {
   return clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
+}
+
+// Whether `candidate` (a sample's motion, xy made its move) shows the surface that `chosen` does:
+// the same instance (or light, or the sky), within kSameSurfaceDepth of its depth.
+bool sameSurface(vec4 candidate, vec4 chosen) {
+  return candidate.w == chosen.w && candidate.z > 0.0 &&
+         abs(candidate.z - chosen.z) <= kSameSurfaceDepth * chosen.z;
 }
 
 // The share of its weight a moving view's history keeps after the clamp moved it by `moved`.
@@ -177,24 +187,60 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // walk) the sample nearest in depth is the one nearest the camera, whose point moves further
   // than the pixel's: its move alone put the moving picture ahead of where it is (04 Stained
   // Glass's shadows on the floor by about 1.5 output pixels at 4x; docs/QUALITY.md, session 31).
-  // On one surface: the same instance (or light, or the sky), within kSameSurfaceDepth of the
-  // chosen sample's depth. A reflection keeps its own sample's move: the samples in a mirror show
-  // different things at different depths behind it, while their depths are the mirror's.
+  // On one surface: sameSurface. A reflection keeps its own sample's move: the samples in a
+  // mirror show different things at different depths behind it, while their depths are the
+  // mirror's.
   vec2 displacement = motion.xy;
   if (motion.w >= 0.0) {
     vec2 interpolated = vec2(0.0);
     float weights = 0.0;
+    int onSurface = 0;  // the corners on that surface, a bit each
     for (int corner = 0; corner < 4; ++corner) {
       vec4 candidate = cornerMotions[corner];
-      if (candidate.w != motion.w || candidate.z <= 0.0 ||
-          abs(candidate.z - motion.z) > kSameSurfaceDepth * motion.z)
-        continue;
+      if (!sameSurface(candidate, motion)) continue;
+      onSurface |= 1 << corner;
       float w = ((corner & 1) != 0 ? fraction.x : 1.0 - fraction.x) *
                 ((corner >> 1) != 0 ? fraction.y : 1.0 - fraction.y);
       interpolated += w * candidate.xy;
       weights += w;
     }
     if (weights > 0.0) displacement = interpolated / weights;
+    // Along a silhouette, where not all four show the surface, the pixel's point may lie past the
+    // chosen sample's, nearer the outline, and the outline is where the surface turns away: a
+    // box's side face seen at a slant, a pillar's curve. There the surface lies deeper than the
+    // sample nearest in depth, and moves less; with that sample's move the outline ran ahead of
+    // itself (the strafing box's far edge by 1.0-2.0 output pixels). So the move is continued
+    // from the chosen sample towards the pixel, along each axis, as it changes to the next
+    // sample on the surface (within the four, or else the one beyond the chosen sample on the
+    // other side), and kept within the four samples' moves (docs/QUALITY.md, session 32).
+    if (onSurface != 15 && (!cameraHeldStill() || instanceMoved(uint(motion.w)))) {
+      ivec2 chosenOffset = ivec2(chosenCorner & 1, chosenCorner >> 1);
+      ivec2 chosenAt = cornerSample(base, chosenCorner, renderSize);
+      vec2 reach = abs(fraction - vec2(chosenOffset));  // from the chosen sample to the pixel
+      vec2 continued = motion.xy, lowest = motion.xy, highest = motion.xy;
+      for (int corner = 0; corner < 4; ++corner) {
+        vec4 candidate = cornerMotions[corner];
+        if (candidate.z <= 0.0) continue;
+        lowest = min(lowest, candidate.xy);
+        highest = max(highest, candidate.xy);
+      }
+      for (int axis = 0; axis < 2; ++axis) {
+        int next = chosenCorner ^ (1 << axis);  // the chosen sample's neighbour in the four
+        vec2 change = vec2(0.0);
+        if ((onSurface & (1 << next)) != 0) {
+          change = cornerMotions[next].xy - motion.xy;
+        } else {
+          ivec2 away = ivec2(0);
+          away[axis] = 2 * chosenOffset[axis] - 1;  // the side away from the pixel
+          ivec2 at = clamp(chosenAt + away, ivec2(0), renderSize - 1);
+          vec4 beyond = imageLoad(motionImage, at);
+          beyond.xy -= vec2(at) + jitter;
+          if (at != chosenAt && sameSurface(beyond, motion)) change = motion.xy - beyond.xy;
+        }
+        continued += change * reach[axis];
+      }
+      displacement = clamp(continued, lowest, highest);
+    }
   }
 #if HAS_MIRRORS
   // A reflection's sample (w < 0): inside the mirror the pixel follows the reflection, whose
