@@ -1,11 +1,11 @@
 // Temporal upscaling (TAAU): this frame's jittered picture at the render size is accumulated
 // into a history at the output size, which follows the motion ray-gen wrote (camera, moving
 // instances and lights; in a mirror, the reflection's; between the samples on one surface,
-// interpolated), is clamped to the range of this frame's samples around it (no ghosts where the
-// view changed) and, while the camera moves, counts for less the further the clamp moved it,
-// where it moves counts for at most 16 frames' worth at 4x, 8 at 2x (each frame's resampling
-// blurs it), and is dropped where a moving instance (or light) was seen before (no trail behind
-// it).
+// interpolated, and past them towards a silhouette, continued), is clamped to the range of this
+// frame's samples around it (no ghosts where the view changed) and, while the camera moves,
+// counts for less the further the clamp moved it, where it moves counts for at most 16 frames'
+// worth at 4x, 8 at 2x (each frame's resampling blurs it), and is dropped where a moving
+// instance (or light) was seen before (no trail behind it).
 // Colours stay the tonemap's sRGB-encoded values, which is where the eye judges differences.
 // This file resolves one output pixel for the two entry points:
 // temporal_upscale.comp (GPUs: a compute shader storing to images) and temporal_upscale.frag
