@@ -465,10 +465,10 @@ TEST_F(TemporalUpscaleTest, a_strafing_view_keeps_a_floor_where_it_is) {
 TEST_F(TemporalUpscaleTest, a_strafing_view_keeps_the_far_edge_of_a_box_where_it_is) {
   // Strafing 0.3 samples (at the box) a frame for 32 frames, the camera sees the box's side
   // face at a slant, a sample or two wide, and the box's outline on that side is the face's far
-  // edge, 0.8 m deeper than its front. Moving the pixels there as the sample nearest in depth
-  // (on the front) ran that edge 1.3 output pixels ahead: 1.56x the still view's error. The move
-  // continued along the side face towards the outline: 1.33x (1.48x counting a side face's
-  // samples 0.1 of their depth apart as one surface, not 0.3).
+  // edge, 0.8 m deeper than its front. Moving the pixels there as the sample nearest in depth,
+  // nearer the camera than that edge, ran the edge 1.3 output pixels ahead: 1.56x the still
+  // view's error. The move continued along the side face towards the outline: 1.33x (1.48x with
+  // samples within 0.1 of each other's depth counted as one surface instead of 0.3).
   const float step = 0.3f * renderPixelAt(-kBoxDepth);
   const StrafeErrors errors = strafedAndHeldStill(boxScene(0.0f), step, /*frames=*/32);
   EXPECT_LE(errors.moving, 1.45 * errors.still);
