@@ -190,15 +190,21 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // On one surface: sameSurface. A reflection keeps its own sample's move: the samples in a
   // mirror show different things at different depths behind it, while their depths are the
   // mirror's.
+  bool cameraStill = cameraHeldStill();
   vec2 displacement = motion.xy;
   if (motion.w >= 0.0) {
     vec2 interpolated = vec2(0.0);
     float weights = 0.0;
     int onSurface = 0;  // the corners on that surface, a bit each
+    // The moves of the chosen sample's neighbours within the four, along x and along y (kept
+    // here, where the corner is a constant once the loop is unrolled).
+    vec2 neighbourMoves[2] = vec2[2](motion.xy, motion.xy);
     for (int corner = 0; corner < 4; ++corner) {
       vec4 candidate = cornerMotions[corner];
       if (!sameSurface(candidate, motion)) continue;
       onSurface |= 1 << corner;
+      if (corner == (chosenCorner ^ 1)) neighbourMoves[0] = candidate.xy;
+      if (corner == (chosenCorner ^ 2)) neighbourMoves[1] = candidate.xy;
       float w = ((corner & 1) != 0 ? fraction.x : 1.0 - fraction.x) *
                 ((corner >> 1) != 0 ? fraction.y : 1.0 - fraction.y);
       interpolated += w * candidate.xy;
@@ -213,7 +219,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
     // from the chosen sample towards the pixel, along each axis, as it changes to the next
     // sample on the surface (within the four, or else the one beyond the chosen sample on the
     // other side), and kept within the four samples' moves (docs/QUALITY.md, session 32).
-    if (onSurface != 15 && (!cameraHeldStill() || instanceMoved(uint(motion.w)))) {
+    if (onSurface != 15 && (!cameraStill || instanceMoved(uint(motion.w)))) {
       ivec2 chosenOffset = ivec2(chosenCorner & 1, chosenCorner >> 1);
       ivec2 chosenAt = cornerSample(base, chosenCorner, renderSize);
       vec2 reach = abs(fraction - vec2(chosenOffset));  // from the chosen sample to the pixel
@@ -225,17 +231,17 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
         highest = max(highest, candidate.xy);
       }
       for (int axis = 0; axis < 2; ++axis) {
-        int next = chosenCorner ^ (1 << axis);  // the chosen sample's neighbour in the four
         vec2 change = vec2(0.0);
-        if ((onSurface & (1 << next)) != 0) {
-          change = cornerMotions[next].xy - motion.xy;
+        if ((onSurface & (1 << (chosenCorner ^ (1 << axis)))) != 0) {
+          change = neighbourMoves[axis] - motion.xy;
         } else {
           ivec2 away = ivec2(0);
           away[axis] = 2 * chosenOffset[axis] - 1;  // the side away from the pixel
           ivec2 at = clamp(chosenAt + away, ivec2(0), renderSize - 1);
           vec4 beyond = imageLoad(motionImage, at);
           beyond.xy -= vec2(at) + jitter;
-          if (at != chosenAt && sameSurface(beyond, motion)) change = motion.xy - beyond.xy;
+          // (At the picture's edge `at` is the chosen sample itself, and the change 0.)
+          if (sameSurface(beyond, motion)) change = motion.xy - beyond.xy;
         }
         continued += change * reach[axis];
       }
@@ -263,7 +269,6 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // the sample's point back, becomes exactly 0, and the three history taps of weight 0 are not
   // read.
   vec2 previous = vec2(pixel) + round(displacement / scale * kMotionGrid) / kMotionGrid;
-  bool cameraStill = cameraHeldStill();
   // What the pixel shows moves: the camera does, or the instance the pixel shows.
   bool pointMoves = !cameraStill || instanceMoved(seenInstance);
   if (!pointMoves) {
