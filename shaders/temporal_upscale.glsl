@@ -116,6 +116,20 @@ ivec2 cornerSample(vec2 base, int corner, ivec2 renderSize) {
   return clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
 }
 
+// The motion ray-gen wrote for the sample at render pixel `at`, xy made how far its point moved
+// (render pixels; the sample lies at `at` + `jitter`).
+vec4 sampleMotion(ivec2 at, vec2 jitter) {
+  vec4 motion = imageLoad(motionImage, at);
+  motion.xy -= vec2(at) + jitter;
+  return motion;
+}
+
+// The bilinear weight of corner `corner` (0-3: x, then y) of four around a point `f` (0-1 in x
+// and y) past the first.
+float bilinearWeight(vec2 f, int corner) {
+  return ((corner & 1) != 0 ? f.x : 1.0 - f.x) * ((corner >> 1) != 0 ? f.y : 1.0 - f.y);
+}
+
 // Whether `candidate` (a sample's motion, xy made its move) shows the surface that `chosen` does:
 // the same instance (or light, or the sky), within kSameSurfaceDepth of its depth.
 bool sameSurface(vec4 candidate, vec4 chosen) {
@@ -160,9 +174,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   vec4 cornerMotions[4];
   vec4 motion = vec4(0.0);
   for (int corner = 0; corner < 4; ++corner) {
-    ivec2 at = cornerSample(base, corner, renderSize);
-    vec4 cornerMotion = imageLoad(motionImage, at);
-    cornerMotion.xy -= vec2(at) + jitter;
+    vec4 cornerMotion = sampleMotion(cornerSample(base, corner, renderSize), jitter);
     cornerMotions[corner] = cornerMotion;
     if (corner == nearestCorner) motion = cornerMotion;
   }
@@ -205,8 +217,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
       onSurface |= 1 << corner;
       if (corner == (chosenCorner ^ 1)) neighbourMoves[0] = candidate.xy;
       if (corner == (chosenCorner ^ 2)) neighbourMoves[1] = candidate.xy;
-      float w = ((corner & 1) != 0 ? fraction.x : 1.0 - fraction.x) *
-                ((corner >> 1) != 0 ? fraction.y : 1.0 - fraction.y);
+      float w = bilinearWeight(fraction, corner);
       interpolated += w * candidate.xy;
       weights += w;
     }
@@ -237,10 +248,8 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
         } else {
           ivec2 away = ivec2(0);
           away[axis] = 2 * chosenOffset[axis] - 1;  // the side away from the pixel
-          ivec2 at = clamp(chosenAt + away, ivec2(0), renderSize - 1);
-          vec4 beyond = imageLoad(motionImage, at);
-          beyond.xy -= vec2(at) + jitter;
-          // (At the picture's edge `at` is the chosen sample itself, and the change 0.)
+          vec4 beyond = sampleMotion(clamp(chosenAt + away, ivec2(0), renderSize - 1), jitter);
+          // (At the picture's edge that is the chosen sample itself, and the change 0.)
           if (sameSurface(beyond, motion)) change = motion.xy - beyond.xy;
         }
         continued += change * reach[axis];
@@ -307,7 +316,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
       float taps = 0.0;
       for (int tap = 0; tap < 4; ++tap) {
         ivec2 at = ivec2(from) + ivec2(tap & 1, tap >> 1);
-        float w = ((tap & 1) != 0 ? g.x : 1.0 - g.x) * ((tap >> 1) != 0 ? g.y : 1.0 - g.y);
+        float w = bilinearWeight(g, tap);
         if (w == 0.0 || any(lessThan(at, ivec2(0))) || any(greaterThanEqual(at, outputSize)))
           continue;
         // The nearest one was read already (a still view's only tap).
