@@ -194,6 +194,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
       chosenCorner = corner;
     }
   }
+  ivec2 chosenAt = cornerSample(base, chosenCorner, renderSize);  // the chosen sample's pixel
   // The pixel's point moves as the samples on that surface around it do, their moves
   // interpolated bilinearly at the pixel. On a surface seen at a slant (a floor, a wall along the
   // walk) the sample nearest in depth is the one nearest the camera, whose point moves further
@@ -232,7 +233,6 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
     // other side), and kept within the four samples' moves (docs/QUALITY.md, session 32).
     if (onSurface != 15 && (!cameraStill || instanceMoved(uint(motion.w)))) {
       ivec2 chosenOffset = ivec2(chosenCorner & 1, chosenCorner >> 1);
-      ivec2 chosenAt = cornerSample(base, chosenCorner, renderSize);
       vec2 reach = abs(fraction - vec2(chosenOffset));  // from the chosen sample to the pixel
       vec2 continued = motion.xy, lowest = motion.xy, highest = motion.xy;
       for (int corner = 0; corner < 4; ++corner) {
@@ -265,9 +265,8 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // docs/QUALITY.md, session 26.)
   if (motion.w < 0.0) {
     if (!oneSurface) {
-      ivec2 motionSample = cornerSample(base, chosenCorner, renderSize);
-      motion.xyz = previousOfCameraRayPoint(motionSample, jitter, motion.z);
-      displacement = motion.xy - (vec2(motionSample) + jitter);
+      motion.xyz = previousOfCameraRayPoint(chosenAt, jitter, motion.z);
+      displacement = motion.xy - (vec2(chosenAt) + jitter);
     }
     motion.w = -motion.w;
   }
