@@ -118,12 +118,13 @@ int commandPlay(const Options& options) {
   contextSettings.presentation = true;
 
   // The presenter (its surface) must go before the context (its instance).
+  render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   std::unique_ptr<render::Context> context;
   std::unique_ptr<render::Presenter> presenter;
   try {
     context = std::make_unique<render::Context>(contextSettings);
-    presenter =
-        std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync, true);
+    presenter = std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync,
+                                                    compiler);
   } catch (const render::RenderError& error) {
     presenter.reset();
     context.reset();
@@ -142,7 +143,6 @@ int commandPlay(const Options& options) {
       "reloads it\n");
   std::fflush(stdout);
 
-  render::ShaderCompiler compiler = makeCompiler(findDataRoot());
   const play::PlayOptions playing = playOptions(options);
   int status = 0;
   {

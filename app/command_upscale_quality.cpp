@@ -61,7 +61,7 @@ Picture pictureOf(const render::Renderer& renderer) {
   return picture;
 }
 
-// What the window's blit with a linear filter makes of `source` at width x height: texel
+// What the window's linear filter makes of `source` at width x height: texel
 // centres at (i + 0.5), edges clamped, on the encoded values (the swapchain is UNORM).
 Picture bilinearUpscale(const Picture& source, uint32_t width, uint32_t height) {
   Picture result{width, height, std::vector<float>(size_t(width) * height * 3)};
@@ -298,7 +298,7 @@ int commandBenchUpscale(const Options& options) {
                            staticRuns[i].second, staticRuns[i].first, still));
   }
   writePicture(outDirectory / ("upscale_" + stem + "_taau_16.png"), staticRuns[2].first);
-  // What play does on a CPU driver: upscaled to twice the render size, then blitted.
+  // What play does on a CPU driver: upscaled to twice the render size, then scaled bilinearly.
   const auto doubled = bench.upscaled({16}, atStart, options.width * 2, options.height * 2);
   rows.push_back(measure("TAAU 2x after 16, bilinear upscale", 16, doubled[0].second,
                          bilinearUpscale(doubled[0].first, outputWidth, outputHeight), still));

@@ -103,7 +103,7 @@ const std::vector<OptionSpec> kOptions{
      {"render", "bench", "bench-upscale"}},
     {"--no-upscale",
      "",
-     "scale the picture to the window with a bilinear blit instead of temporal\nupscaling",
+     "scale the picture to the window bilinearly instead of temporal\nupscaling",
      {"play"}},
     {"--fixed-scale",
      "",

@@ -130,7 +130,7 @@ int Game::run(const fs::path& firstLevel) {
   }
   finishRecording(played_.recording, *played_.simulation, played_.level->name);
   saveSettingsIfChanged(settings_, savedSettings_);
-  // The presenter's last blit reads the renderer's image: finish it before either goes.
+  // The presenter's last draw reads the renderer's image: finish it before either goes.
   vkDeviceWaitIdle(context_.device());
   played_.simulation.reset();
   ui_.reset();

@@ -26,7 +26,7 @@ constexpr uint32_t kMinRenderSide = 16;  // the smallest internal image side ren
 // quadruple the work) times the render scale: 1280x720 at 0.25 gives 320x180.
 // With upscaling, the picture is upscaled temporally to the window's size; on a CPU driver to at
 // most twice the render size (where each output pixel costs about as much as a traced one: 1280
-// x 720 took 39 ms, 640 x 360 10 ms on lavapipe), and the window's blit does the rest.
+// x 720 took 39 ms, 640 x 360 10 ms on lavapipe), and the window's bilinear draw does the rest.
 void chooseRenderSize(PlayedLevel& played, const LevelSetup& setup) {
   int width = 0, height = 0;
   glfwGetWindowSize(setup.window, &width, &height);
@@ -79,7 +79,7 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   auto level = std::make_unique<game::Level>(game::loadLevel(file, setup.options.levelLoading));
   for (const std::string& warning : level->warnings)
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
-  vkDeviceWaitIdle(setup.context.device());  // the last blit may still read the old image
+  vkDeviceWaitIdle(setup.context.device());  // the last draw may still read the old image
   played.simulation.reset();
   played.level = std::move(level);
   played.file = file;

@@ -67,7 +67,7 @@ UiLayer::UiLayer(const render::Context& context, GLFWwindow* window,
     info.ImageCount = std::max(presenter.imageCount(), presenter.minImageCount());
     info.MSAASamples = VK_SAMPLE_COUNT_1_BIT;
     info.CheckVkResultFn = checkImguiResult;
-    vulkanBackend_ = ImGui_ImplVulkan_Init(&info, presenter.overlayRenderPass());
+    vulkanBackend_ = ImGui_ImplVulkan_Init(&info, presenter.renderPass());
     if (!vulkanBackend_) throw render::RenderError("Dear ImGui's Vulkan backend did not start");
     context.submitAndWait(
         [](VkCommandBuffer commands) { ImGui_ImplVulkan_CreateFontsTexture(commands); });

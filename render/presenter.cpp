@@ -21,12 +21,6 @@ namespace {
 
 constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;  // the renderer's output image
 
-bool canBlitTo(VkPhysicalDevice physicalDevice, VkFormat format) {
-  VkFormatProperties properties{};
-  vkGetPhysicalDeviceFormatProperties(physicalDevice, format, &properties);
-  return (properties.optimalTilingFeatures & VK_FORMAT_FEATURE_BLIT_DST_BIT) != 0;
-}
-
 bool isSrgb(VkFormat format) {
   switch (format) {
     case VK_FORMAT_B8G8R8A8_SRGB:
@@ -38,8 +32,8 @@ bool isSrgb(VkFormat format) {
   }
 }
 
-// A UNORM 8-bit format first (the bytes are already sRGB-encoded), then any non-sRGB format
-// the blit can write, then whatever the surface offers.
+// A UNORM 8-bit format first (the bytes are already sRGB-encoded), then any non-sRGB format,
+// then whatever the surface offers.
 VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physicalDevice, VkSurfaceKHR surface) {
   uint32_t count = 0;
   vkCheck(vkGetPhysicalDeviceSurfaceFormatsKHR(physicalDevice, surface, &count, nullptr),
@@ -50,13 +44,12 @@ VkSurfaceFormatKHR chooseFormat(VkPhysicalDevice physicalDevice, VkSurfaceKHR su
   if (formats.empty()) throw RenderError("the window surface offers no formats");
   for (VkFormat preferred : {VK_FORMAT_B8G8R8A8_UNORM, VK_FORMAT_R8G8B8A8_UNORM}) {
     for (const VkSurfaceFormatKHR& format : formats) {
-      if (format.format == preferred && format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR &&
-          canBlitTo(physicalDevice, format.format))
+      if (format.format == preferred && format.colorSpace == VK_COLOR_SPACE_SRGB_NONLINEAR_KHR)
         return format;
     }
   }
   for (const VkSurfaceFormatKHR& format : formats)
-    if (!isSrgb(format.format) && canBlitTo(physicalDevice, format.format)) return format;
+    if (!isSrgb(format.format)) return format;
   return formats.front();
 }
 
@@ -82,16 +75,28 @@ VkSemaphore createSemaphore(VkDevice device) {
 }
 
 // The largest rectangle of the source's aspect ratio centred in the target.
-void fitRectangle(uint32_t sourceWidth, uint32_t sourceHeight, VkExtent2D target, VkOffset3D* low,
-                  VkOffset3D* high) {
+VkRect2D fitRectangle(uint32_t sourceWidth, uint32_t sourceHeight, VkExtent2D target) {
   const double scale =
       std::min(double(target.width) / sourceWidth, double(target.height) / sourceHeight);
-  const int32_t width = std::max(1, int32_t(sourceWidth * scale + 0.5));
-  const int32_t height = std::max(1, int32_t(sourceHeight * scale + 0.5));
-  const int32_t x = (int32_t(target.width) - width) / 2;
-  const int32_t y = (int32_t(target.height) - height) / 2;
-  *low = {x, y, 0};
-  *high = {x + width, y + height, 1};
+  const uint32_t width = std::max(1u, uint32_t(sourceWidth * scale + 0.5));
+  const uint32_t height = std::max(1u, uint32_t(sourceHeight * scale + 0.5));
+  const int32_t x = (int32_t(target.width) - int32_t(width)) / 2;
+  const int32_t y = (int32_t(target.height) - int32_t(height)) / 2;
+  return {{x, y}, {width, height}};
+}
+
+// The HUD's colours as the window's image gets them: sRGB-encoded like the picture.
+std::array<float, 4> hudColour(HudColour colour) {
+  constexpr std::array<std::array<uint8_t, 3>, size_t(HudColour::Count)> kBytes = {{
+      {255, 255, 255},  // white
+      {40, 40, 40},     // shade: bar backgrounds
+      {86, 180, 233},   // sky blue: progress
+      {0, 158, 115},    // bluish green: met, won
+      {230, 159, 0},    // orange: exposure
+      {213, 94, 0},     // vermillion: lost
+  }};
+  const std::array<uint8_t, 3>& bytes = kBytes.at(size_t(colour));
+  return {bytes[0] / 255.0f, bytes[1] / 255.0f, bytes[2] / 255.0f, 1.0f};
 }
 
 }  // namespace
@@ -132,8 +137,9 @@ const char* Presenter::presentModeName(VkPresentModeKHR mode) {
   }
 }
 
-Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync, bool overlayPass)
-    : context_(context), window_(window), vsync_(vsync), wantsOverlayPass_(overlayPass) {
+Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync,
+                     ShaderCompiler& compiler)
+    : context_(context), window_(window), vsync_(vsync) {
   surface_.emplace(context, window);
   try {
     VkBool32 canPresent = VK_FALSE;
@@ -148,39 +154,22 @@ Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync, boo
     VkFormatProperties displayProperties{};
     vkGetPhysicalDeviceFormatProperties(context.physicalDevice(), kDisplayFormat,
                                         &displayProperties);
-    if (displayProperties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT)
-      filter_ = VK_FILTER_LINEAR;
+    const VkFilter filter =
+        displayProperties.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT
+            ? VK_FILTER_LINEAR
+            : VK_FILTER_NEAREST;
 
     imageAcquired_ = createSemaphore(context.device());
     VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first blit
-    vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &blitFinished_), "vkCreateFence");
+    fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first frame
+    vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &frameFinished_), "vkCreateFence");
     commands_ = context.allocateCommandBuffer();
     createSwapchain();
-    createPalette();
+    windowPicture_.emplace(context, compiler, renderPass_, filter);
   } catch (...) {
     release();
     throw;
   }
-}
-
-void Presenter::createPalette() {
-  // RGBA bytes, already sRGB-encoded like the picture; the blit converts to the swapchain's
-  // channel order, as it does for the picture.
-  constexpr std::array<std::array<uint8_t, 4>, size_t(HudColour::Count)> kColours = {{
-      {255, 255, 255, 255},  // white
-      {40, 40, 40, 255},     // shade: bar backgrounds
-      {86, 180, 233, 255},   // sky blue: progress
-      {0, 158, 115, 255},    // bluish green: met, won
-      {230, 159, 0, 255},    // orange: exposure
-      {213, 94, 0, 255},     // vermillion: lost
-  }};
-  const uint32_t count = uint32_t(kColours.size());
-  palette_ = createImage2D(context_, count, 1, VK_FORMAT_R8G8B8A8_UNORM,
-                           VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                           "hud palette", &paletteMemory_);
-  uploadImage2D(context_, palette_, count, 1, kColours.data(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
 }
 
 Presenter::~Presenter() {
@@ -189,26 +178,23 @@ Presenter::~Presenter() {
 
 void Presenter::release() {
   const VkDevice device = context_.device();
-  if (blitFinished_) vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX);
+  if (frameFinished_) vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX);
   // Presentation has no fence of its own; the queue going idle covers the last present.
   vkQueueWaitIdle(context_.queue());
+  windowPicture_.reset();
   destroySwapchainResources();
   if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
   swapchain_ = VK_NULL_HANDLE;
-  if (overlayPass_) vkDestroyRenderPass(device, overlayPass_, nullptr);
-  overlayPass_ = VK_NULL_HANDLE;
+  if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
+  renderPass_ = VK_NULL_HANDLE;
   captureBuffer_ = Buffer();
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   commands_ = VK_NULL_HANDLE;
-  if (blitFinished_) vkDestroyFence(device, blitFinished_, nullptr);
-  blitFinished_ = VK_NULL_HANDLE;
+  if (frameFinished_) vkDestroyFence(device, frameFinished_, nullptr);
+  frameFinished_ = VK_NULL_HANDLE;
   if (imageAcquired_) vkDestroySemaphore(device, imageAcquired_, nullptr);
   imageAcquired_ = VK_NULL_HANDLE;
   surface_.reset();  // after its swapchain
-  if (palette_) vkDestroyImage(device, palette_, nullptr);
-  palette_ = VK_NULL_HANDLE;
-  if (paletteMemory_) vkFreeMemory(device, paletteMemory_, nullptr);
-  paletteMemory_ = VK_NULL_HANDLE;
 }
 
 void Presenter::setVsync(bool vsync) {
@@ -224,32 +210,34 @@ void Presenter::destroySwapchainResources() {
   framebuffers_.clear();
   for (VkImageView view : views_) vkDestroyImageView(device, view, nullptr);
   views_.clear();
-  for (VkSemaphore semaphore : blitDone_) vkDestroySemaphore(device, semaphore, nullptr);
-  blitDone_.clear();
+  for (VkSemaphore semaphore : frameDrawn_) vkDestroySemaphore(device, semaphore, nullptr);
+  frameDrawn_.clear();
   images_.clear();
 }
 
-void Presenter::createOverlayPass() {
+void Presenter::createRenderPass() {
   VkAttachmentDescription attachment{};
   attachment.format = format_;
   attachment.samples = VK_SAMPLE_COUNT_1_BIT;
-  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;  // the picture and HUD are already there
+  // Every pixel is drawn: the picture, and black beside it where it does not fill the window.
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachment.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  attachment.initialLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
+  attachment.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   attachment.finalLayout = VK_IMAGE_LAYOUT_PRESENT_SRC_KHR;
   VkAttachmentReference colour{0, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
   subpass.pipelineBindPoint = VK_PIPELINE_BIND_POINT_GRAPHICS;
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &colour;
-  // After the blits' writes; before presentation (which the semaphore orders).
+  // After the acquire, whose semaphore the submit waits for at the colour output stage (the
+  // layout transition too); before presentation (which the semaphore orders).
   std::array<VkSubpassDependency, 2> dependencies{};
   dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[0].dstSubpass = 0;
-  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_TRANSFER_BIT;
-  dependencies[0].srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+  dependencies[0].srcStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  dependencies[0].srcAccessMask = 0;
   dependencies[0].dstStageMask = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   dependencies[0].dstAccessMask =
       VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
@@ -266,7 +254,7 @@ void Presenter::createOverlayPass() {
   info.pSubpasses = &subpass;
   info.dependencyCount = uint32_t(dependencies.size());
   info.pDependencies = dependencies.data();
-  vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &overlayPass_),
+  vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &renderPass_),
           "vkCreateRenderPass");
 }
 
@@ -276,10 +264,7 @@ void Presenter::createSwapchain() {
   vkCheck(
       vkGetPhysicalDeviceSurfaceCapabilitiesKHR(physicalDevice, surface_->handle(), &capabilities),
       "vkGetPhysicalDeviceSurfaceCapabilitiesKHR");
-  if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT))
-    throw RenderError("the window surface's images cannot be blit targets");
-  if (wantsOverlayPass_ &&
-      !(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
+  if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
     throw RenderError("the window surface's images cannot be drawn to");
   canCapture_ = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
   const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_->handle());
@@ -316,9 +301,8 @@ void Presenter::createSwapchain() {
   info.imageColorSpace = surfaceFormat.colorSpace;
   info.imageExtent = extent;
   info.imageArrayLayers = 1;
-  // Cleared and blitted to; drawn to by the overlay; copied from for captures.
-  info.imageUsage = VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-  if (wantsOverlayPass_) info.imageUsage |= VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  // Drawn to by the render pass; copied from for captures.
+  info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   if (canCapture_) info.imageUsage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = capabilities.currentTransform;
@@ -332,8 +316,8 @@ void Presenter::createSwapchain() {
   destroySwapchainResources();
   if (swapchain_) vkDestroySwapchainKHR(context_.device(), swapchain_, nullptr);
   swapchain_ = swapchain;
-  if (overlayPass_ && surfaceFormat.format != format_) {
-    // The overlay's pipeline was made for the old format's pass.
+  if (renderPass_ && surfaceFormat.format != format_) {
+    // The pipelines (the picture's, the HUD's, the overlay's) were made for the old format's pass.
     throw RenderError("the window surface changed its format; restart the game");
   }
   format_ = surfaceFormat.format;
@@ -346,29 +330,27 @@ void Presenter::createSwapchain() {
   images_.resize(count);
   vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, images_.data()),
           "vkGetSwapchainImagesKHR");
-  for (uint32_t i = 0; i < count; ++i) blitDone_.push_back(createSemaphore(context_.device()));
-  if (wantsOverlayPass_) {
-    if (!overlayPass_) createOverlayPass();
-    for (VkImage image : images_) {
-      views_.push_back(createImageView(context_, image, format_, "swapchain image"));
-      VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
-      framebufferInfo.renderPass = overlayPass_;
-      framebufferInfo.attachmentCount = 1;
-      framebufferInfo.pAttachments = &views_.back();
-      framebufferInfo.width = extent_.width;
-      framebufferInfo.height = extent_.height;
-      framebufferInfo.layers = 1;
-      VkFramebuffer framebuffer = VK_NULL_HANDLE;
-      vkCheck(vkCreateFramebuffer(context_.device(), &framebufferInfo, nullptr, &framebuffer),
-              "vkCreateFramebuffer");
-      framebuffers_.push_back(framebuffer);
-    }
+  for (uint32_t i = 0; i < count; ++i) frameDrawn_.push_back(createSemaphore(context_.device()));
+  if (!renderPass_) createRenderPass();
+  for (VkImage image : images_) {
+    views_.push_back(createImageView(context_, image, format_, "swapchain image"));
+    VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
+    framebufferInfo.renderPass = renderPass_;
+    framebufferInfo.attachmentCount = 1;
+    framebufferInfo.pAttachments = &views_.back();
+    framebufferInfo.width = extent_.width;
+    framebufferInfo.height = extent_.height;
+    framebufferInfo.layers = 1;
+    VkFramebuffer framebuffer = VK_NULL_HANDLE;
+    vkCheck(vkCreateFramebuffer(context_.device(), &framebufferInfo, nullptr, &framebuffer),
+            "vkCreateFramebuffer");
+    framebuffers_.push_back(framebuffer);
   }
   swapchainStale_ = false;
 }
 
 void Presenter::recreateSwapchain() {
-  vkCheck(vkWaitForFences(context_.device(), 1, &blitFinished_, VK_TRUE, UINT64_MAX),
+  vkCheck(vkWaitForFences(context_.device(), 1, &frameFinished_, VK_TRUE, UINT64_MAX),
           "vkWaitForFences");
   // The old images' semaphores may still be waited on by a queued present.
   vkCheck(vkQueueWaitIdle(context_.queue()), "vkQueueWaitIdle");
@@ -376,9 +358,8 @@ void Presenter::recreateSwapchain() {
 }
 
 PictureRect Presenter::pictureRect(uint32_t pictureWidth, uint32_t pictureHeight) const {
-  VkOffset3D low{}, high{};
-  fitRectangle(pictureWidth, pictureHeight, extent_, &low, &high);
-  return {low.x, low.y, high.x - low.x, high.y - low.y};
+  const VkRect2D area = fitRectangle(pictureWidth, pictureHeight, extent_);
+  return {area.offset.x, area.offset.y, int32_t(area.extent.width), int32_t(area.extent.height)};
 }
 
 void Presenter::captureNextPresent() {
@@ -388,7 +369,7 @@ void Presenter::captureNextPresent() {
 
 void Presenter::collectCapture() {
   if (captureInFlight_) {
-    vkCheck(vkWaitForFences(context_.device(), 1, &blitFinished_, VK_TRUE, UINT64_MAX),
+    vkCheck(vkWaitForFences(context_.device(), 1, &frameFinished_, VK_TRUE, UINT64_MAX),
             "vkWaitForFences");
     Rgba8Image image;
     image.width = extent_.width;
@@ -422,7 +403,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
 
   const VkDevice device = context_.device();
   collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
-  vkCheck(vkWaitForFences(device, 1, &blitFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -438,17 +419,17 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   }
   if (acquired != VK_SUBOPTIMAL_KHR) vkCheck(acquired, "vkAcquireNextImageKHR");
   // Reset only once a submit that signals it is certain to follow.
-  vkCheck(vkResetFences(device, 1, &blitFinished_), "vkResetFences");
+  vkCheck(vkResetFences(device, 1, &frameFinished_), "vkResetFences");
 
   vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordBlit(commands_, renderer, imageIndex, hud, overlay);
+  recordFrame(commands_, renderer, imageIndex, hud, overlay);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
 
-  // The clear and blit write the image at the transfer stage: wait for the acquire there.
-  const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_TRANSFER_BIT;
+  // The render pass writes the image at the colour output stage: wait for the acquire there.
+  const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
   submit.pWaitSemaphores = &imageAcquired_;
@@ -456,12 +437,12 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commands_;
   submit.signalSemaphoreCount = 1;
-  submit.pSignalSemaphores = &blitDone_[imageIndex];
-  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, blitFinished_), "vkQueueSubmit");
+  submit.pSignalSemaphores = &frameDrawn_[imageIndex];
+  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, frameFinished_), "vkQueueSubmit");
 
   VkPresentInfoKHR presentInfo{VK_STRUCTURE_TYPE_PRESENT_INFO_KHR};
   presentInfo.waitSemaphoreCount = 1;
-  presentInfo.pWaitSemaphores = &blitDone_[imageIndex];
+  presentInfo.pWaitSemaphores = &frameDrawn_[imageIndex];
   presentInfo.swapchainCount = 1;
   presentInfo.pSwapchains = &swapchain_;
   presentInfo.pImageIndices = &imageIndex;
@@ -482,12 +463,11 @@ void Presenter::recordCapture(VkCommandBuffer commands, VkImage target) {
   if (captureBuffer_.size() != bytes)
     captureBuffer_ = Buffer(context_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
                             "window capture");
-  // After the blits or the overlay pass, which both leave the image ready to present.
-  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                     VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  // After the render pass, which leaves the image ready to present.
+  imageLayoutBarrier(
+      commands, target, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {extent_.width, extent_.height, 1};
@@ -502,102 +482,57 @@ void Presenter::recordCapture(VkCommandBuffer commands, VkImage target) {
   captureInFlight_ = true;
 }
 
-void Presenter::recordBlit(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
-                           std::span<const HudRect> hud, const OverlayDraw& overlay) {
+void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+                            std::span<const HudRect> hud, const OverlayDraw& overlay) {
   const VkImage source = renderer.outputImage();
   const VkImage target = images_[imageIndex];
-  // The renderer's passes (and a readback copy with its layout changes) wrote the image in
-  // earlier submits; make all of it visible to this blit's read.
-  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                     VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                     VK_ACCESS_TRANSFER_READ_BIT);
-  // The previous contents are not needed; the acquire semaphore waited at this stage.
-  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  VkImageBlit blit{};
-  blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  blit.srcOffsets[1] = {int32_t(renderer.shownWidth()), int32_t(renderer.shownHeight()), 1};
-  blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_, &blit.dstOffsets[0],
-               &blit.dstOffsets[1]);
-  // Black bars where the window's aspect ratio differs from the image's. Where the picture
-  // covers the window there are none (on lavapipe the clear cost 0.1-0.3 ms at 1280x720).
-  const bool fillsWindow = blit.dstOffsets[0].x == 0 && blit.dstOffsets[0].y == 0 &&
-                           blit.dstOffsets[1].x == int32_t(extent_.width) &&
-                           blit.dstOffsets[1].y == int32_t(extent_.height);
-  if (!fillsWindow) {
-    const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    vkCmdClearColorImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1, &range);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  }
-  vkCmdBlitImage(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, filter_);
+  // The renderer's passes (and a readback copy with its layout changes) wrote the picture in
+  // earlier submits; make all of it visible to the draw's reads. It stays in GENERAL.
+  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+  // The last frame's draw has finished (present() waited for its fence): the set is free.
+  windowPicture_->setPicture(renderer.outputView());
 
-  // The HUD: each rectangle a blit of one palette texel, over the picture.
-  if (!hud.empty()) {
-    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkOffset3D low = blit.dstOffsets[0], high = blit.dstOffsets[1];
-    const float width = float(high.x - low.x), height = float(high.y - low.y);
-    std::vector<VkImageBlit> rects;
-    for (const HudRect& rect : hud) {
-      auto toX = [&](float fraction) {
-        return std::clamp(low.x + int32_t(std::lround(fraction * width)), 0,
-                          int32_t(extent_.width));
-      };
-      auto toY = [&](float fraction) {
-        return std::clamp(low.y + int32_t(std::lround(fraction * height)), 0,
-                          int32_t(extent_.height));
-      };
-      int32_t x0 = toX(rect.x0), x1 = std::max(toX(rect.x1), x0 + 2);
-      int32_t y0 = toY(rect.y0), y1 = std::max(toY(rect.y1), y0 + 2);
-      x1 = std::min(x1, int32_t(extent_.width));
-      y1 = std::min(y1, int32_t(extent_.height));
-      if (x1 <= x0 || y1 <= y0) continue;
-      VkImageBlit texel{};
-      texel.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      const int32_t colour = int32_t(rect.colour);
-      texel.srcOffsets[0] = {colour, 0, 0};
-      texel.srcOffsets[1] = {colour + 1, 1, 1};
-      texel.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-      texel.dstOffsets[0] = {x0, y0, 0};
-      texel.dstOffsets[1] = {x1, y1, 1};
-      rects.push_back(texel);
-    }
-    // Rectangles may overlap (a bar's fill over its background): one blit each, in order.
-    for (size_t i = 0; i < rects.size(); ++i) {
-      if (i > 0)
-        memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-      vkCmdBlitImage(commands, palette_, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &rects[i], VK_FILTER_NEAREST);
-    }
-  }
+  VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
+  begin.renderPass = renderPass_;
+  begin.framebuffer = framebuffers_[imageIndex];
+  begin.renderArea.extent = extent_;
+  vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  const VkRect2D window{{0, 0}, extent_};
+  const VkRect2D area = fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
+  // Black bars where the window's aspect ratio differs from the picture's.
+  if (area.offset.x != 0 || area.offset.y != 0 || area.extent.width != extent_.width ||
+      area.extent.height != extent_.height)
+    windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
+  windowPicture_->drawPicture(commands, area, renderer.shownWidth(), renderer.shownHeight(),
+                              renderer.outputWidth(), renderer.outputHeight());
 
-  if (overlay && overlayPass_) {
-    // The pass's dependencies order it after the blits and leave the image ready to present.
-    VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-    begin.renderPass = overlayPass_;
-    begin.framebuffer = framebuffers_[imageIndex];
-    begin.renderArea.extent = extent_;
-    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    overlay(commands);
-    vkCmdEndRenderPass(commands);
-  } else {
-    // Presentation needs no access mask: the semaphore signal orders it after the blit.
-    imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                       VK_IMAGE_LAYOUT_PRESENT_SRC_KHR, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0);
+  // The HUD over the picture, in order: a bar's fill lies over its background.
+  const float width = float(area.extent.width), height = float(area.extent.height);
+  for (const HudRect& rect : hud) {
+    auto toX = [&](float fraction) {
+      return std::clamp(area.offset.x + int32_t(std::lround(fraction * width)), 0,
+                        int32_t(extent_.width));
+    };
+    auto toY = [&](float fraction) {
+      return std::clamp(area.offset.y + int32_t(std::lround(fraction * height)), 0,
+                        int32_t(extent_.height));
+    };
+    const int32_t x0 = toX(rect.x0), y0 = toY(rect.y0);
+    const int32_t x1 = std::min(std::max(toX(rect.x1), x0 + 2), int32_t(extent_.width));
+    const int32_t y1 = std::min(std::max(toY(rect.y1), y0 + 2), int32_t(extent_.height));
+    if (x1 <= x0 || y1 <= y0) continue;
+    windowPicture_->fill(commands, {{x0, y0}, {uint32_t(x1 - x0), uint32_t(y1 - y0)}},
+                         hudColour(rect.colour));
   }
+  if (overlay) overlay(commands);
+  vkCmdEndRenderPass(commands);
+
   if (captureRequested_) recordCapture(commands, target);
-  // Back to GENERAL, as the renderer expects, before anything later touches the image.
-  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                     VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+  // The next frame's passes write the picture again only after this draw has read it.
+  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
                      VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
 }
 

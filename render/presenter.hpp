@@ -1,9 +1,10 @@
 #pragma once
-// Shows the renderer's output in a GLFW window: a surface, a swapchain and a scaled blit.
+// Shows the renderer's output in a GLFW window: a surface, a swapchain and one render pass a
+// frame that draws the picture scaled, the HUD's rectangles and the overlay (ImGui).
 //
 // The renderer's display image is R8G8B8A8_UNORM already holding sRGB-encoded bytes, so the
-// swapchain prefers a UNORM format: a blit into an _SRGB image would encode a second time.
-// The blit keeps the image's aspect ratio and fills the rest of the window with black.
+// swapchain prefers a UNORM format: writing them to an _SRGB image would encode a second time.
+// The picture keeps its aspect ratio; the rest of the window is black.
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -14,6 +15,7 @@
 
 #include "render/buffer.hpp"
 #include "render/image_io.hpp"
+#include "render/window_picture.hpp"
 #include "render/window_surface.hpp"
 
 struct GLFWwindow;
@@ -22,6 +24,7 @@ namespace render {
 
 class Context;
 class Renderer;
+class ShaderCompiler;
 
 // Colours of the heads-up display, from the Okabe-Ito palette so they stay apart for the
 // common colour-vision deficiencies.
@@ -34,8 +37,8 @@ struct HudRect {
   HudColour colour;
 };
 
-// Draws over the picture and the HUD, inside the presenter's overlay render pass (the menus
-// and text of Dear ImGui).
+// Draws over the picture and the HUD, inside the presenter's render pass (the menus and text
+// of Dear ImGui).
 using OverlayDraw = std::function<void(VkCommandBuffer)>;
 
 // Where the picture lands in the window, in window pixels.
@@ -46,14 +49,14 @@ struct PictureRect {
 class Presenter {
  public:
   // The context must have been made with ContextOptions::presentation and the instance
-  // extensions glfwGetRequiredInstanceExtensions names. With `overlayPass`, the swapchain
-  // images can also be drawn to through overlayRenderPass(). Throws RenderError.
-  Presenter(const Context& context, GLFWwindow* window, bool vsync, bool overlayPass = false);
+  // extensions glfwGetRequiredInstanceExtensions names. `compiler` compiles the shaders that
+  // draw the picture and the HUD. Throws RenderError.
+  Presenter(const Context& context, GLFWwindow* window, bool vsync, ShaderCompiler& compiler);
   ~Presenter();
   Presenter(const Presenter&) = delete;
   Presenter& operator=(const Presenter&) = delete;
 
-  // Blits the renderer's last frame to the window and queues it for display. Returns false
+  // Draws the renderer's last frame into the window and queues it for display. Returns false
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
   bool present(const Renderer& renderer, std::span<const HudRect> hud = {},
                const OverlayDraw& overlay = {});
@@ -69,9 +72,9 @@ class Presenter {
   // The copied image (RGBA, sRGB-encoded like the picture), once; empty until one is taken.
   std::optional<Rgba8Image> takeCapture();
 
-  // A single-subpass render pass over one swapchain image that keeps what the blits drew and
-  // leaves the image ready to present (null without `overlayPass`).
-  VkRenderPass overlayRenderPass() const { return overlayPass_; }
+  // The single-subpass render pass over one swapchain image in which the overlay draws, after
+  // the picture and the HUD; it leaves the image ready to present.
+  VkRenderPass renderPass() const { return renderPass_; }
   uint32_t imageCount() const { return uint32_t(images_.size()); }
   uint32_t minImageCount() const { return minImageCount_; }
   // The largest rectangle of the picture's aspect ratio centred in the window.
@@ -95,14 +98,13 @@ class Presenter {
   void release();  // every Vulkan object, after the queue has finished with them
   void createSwapchain();
   void destroySwapchainResources();
-  // Waits for the last blit, then rebuilds the swapchain for the window's current size.
+  // Waits for the last frame's draw, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
-  void recordBlit(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
-                  std::span<const HudRect> hud, const OverlayDraw& overlay);
+  void recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+                   std::span<const HudRect> hud, const OverlayDraw& overlay);
   void recordCapture(VkCommandBuffer commands, VkImage target);
-  void collectCapture();  // once the capturing blit has finished: its pixels into capture_
-  void createPalette();
-  void createOverlayPass();
+  void collectCapture();  // once the capturing frame has finished: its pixels into capture_
+  void createRenderPass();
 
   const Context& context_;
   GLFWwindow* window_;
@@ -116,25 +118,21 @@ class Presenter {
   VkExtent2D extent_{};
   std::vector<VkImage> images_;
   uint32_t minImageCount_ = 2;
-  bool wantsOverlayPass_ = false;
-  VkRenderPass overlayPass_ = VK_NULL_HANDLE;
-  std::vector<VkImageView> views_;           // with the overlay pass: one per image
-  std::vector<VkFramebuffer> framebuffers_;  // with the overlay pass: one per image
-  bool canCapture_ = false;                  // the images allow TRANSFER_SRC
+  VkRenderPass renderPass_ = VK_NULL_HANDLE;
+  std::vector<VkImageView> views_;              // one per image
+  std::vector<VkFramebuffer> framebuffers_;     // one per image
+  std::optional<WindowPicture> windowPicture_;  // its pipelines draw in renderPass_
+  bool canCapture_ = false;                     // the images allow TRANSFER_SRC
   bool captureRequested_ = false;
-  Buffer captureBuffer_;  // holds the copy until the blit's fence
+  Buffer captureBuffer_;  // holds the copy until the frame's fence
   bool captureInFlight_ = false;
   std::optional<Rgba8Image> capture_;
   // One per swapchain image: a present may still wait on its semaphore while the next frame
   // is recorded, and an image is only acquired again after its presentation is done.
-  std::vector<VkSemaphore> blitDone_;
-  VkSemaphore imageAcquired_ = VK_NULL_HANDLE;  // reusable once blitFinished_ has signalled
-  VkFence blitFinished_ = VK_NULL_HANDLE;
+  std::vector<VkSemaphore> frameDrawn_;
+  VkSemaphore imageAcquired_ = VK_NULL_HANDLE;  // reusable once frameFinished_ has signalled
+  VkFence frameFinished_ = VK_NULL_HANDLE;
   VkCommandBuffer commands_ = VK_NULL_HANDLE;
-  VkFilter filter_ = VK_FILTER_NEAREST;
-  // One texel per HudColour; rectangles are blits of a texel (TRANSFER_SRC_OPTIMAL for life).
-  VkImage palette_ = VK_NULL_HANDLE;
-  VkDeviceMemory paletteMemory_ = VK_NULL_HANDLE;
 };
 
 }  // namespace render

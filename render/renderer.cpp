@@ -356,9 +356,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                              VK_FORMAT_R32G32B32A32_SFLOAT,
                                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hdr radiance");
-  outputImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
-                                                VK_FORMAT_R8G8B8A8_UNORM,
-                                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "display image");
+  outputImage_ = std::make_unique<StorageImage>(
+      context, options.width, options.height, VK_FORMAT_R8G8B8A8_UNORM,
+      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "display image");
   PipelineFeatures features =
       options.allFeatures ? allFeatures(scene.maxMirrorBounces) : featuresOf(scene);
   features.softShadowSamples = std::clamp(options.softShadowSamples, 1u, 16u);
@@ -1060,6 +1060,10 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
   memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
   stamp(4);
+}
+
+VkImageView Renderer::outputView() const {
+  return upscaler_ ? upscaler_->display().view() : outputImage_->view();
 }
 
 VkImage Renderer::outputImage() const {

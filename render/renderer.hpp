@@ -137,6 +137,7 @@ class Renderer {
   // transfer source). After renderFrame it is in VK_IMAGE_LAYOUT_GENERAL; a user that changes
   // the layout (a presenter's blit) must put it back to GENERAL before the next frame.
   VkImage outputImage() const;
+  VkImageView outputView() const;  // of outputImage(), which can also be sampled
   // The last frame's linear radiance before exposure and tonemap, without the soft lights'
   // share (test and debugging hook; waits).
   std::vector<glm::vec4> readRadiance() const;

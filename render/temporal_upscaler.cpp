@@ -59,9 +59,10 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
   motion_ = std::make_unique<StorageImage>(context, renderWidth, renderHeight,
                                            VK_FORMAT_R32G32B32A32_SFLOAT, 0, "upscale motion");
   const VkImageUsageFlags written = attachments_ ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : 0;
-  display_ = std::make_unique<StorageImage>(context, outputWidth, outputHeight, kDisplayFormat,
-                                            VK_IMAGE_USAGE_TRANSFER_SRC_BIT | written,
-                                            "upscaled display image");
+  display_ = std::make_unique<StorageImage>(
+      context, outputWidth, outputHeight, kDisplayFormat,
+      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | written,
+      "upscaled display image");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
     history_[parity] = std::make_unique<StorageImage>(

@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libimgui-dev fonts-dejavu-core libembree-dev
   xvfb xauth xdotool
   clang libclang-rt-14-dev python3 python3-jsonschema
+  python3-pil  # tests/play_window_test.sh reads the window's captures
 )
 # Mesa >= 24.1 is the first lavapipe with ray tracing; bookworm has 22.3, backports 25.x.
 mesa_min_version="24.1"

@@ -15,14 +15,21 @@ for tool in xvfb-run Xvfb xauth; do
   fi
 done
 
+# The pictures are read with Debian's python3-pil (scripts/setup.sh), which the system's Python
+# has where another python3 may come first on the PATH.
+system_python=/usr/bin/python3
+[ -x "$system_python" ] || system_python=python3
+
 log=$(mktemp)
 recording=$(mktemp --suffix=.json)
 home=$(mktemp -d)  # settings and progress of this test only
-trap 'rm -rf "$log" "$recording" "$home"' EXIT
+capture_dir=$(mktemp -d)
+trap 'rm -rf "$log" "$recording" "$home" "$capture_dir"' EXIT
 export XDG_CONFIG_HOME=$home/config XDG_DATA_HOME=$home/data
 # The test's own display, even when one is set: no window on a developer's screen.
 env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
-  "$sightline" play "$level" --validate --quit-after-ticks 30 --record "$recording" >"$log" 2>&1
+  "$sightline" play "$level" --validate --quit-after-ticks 30 --record "$recording" \
+  --capture "$capture_dir/hud_30.png" >"$log" 2>&1
 status=$?
 cat "$log"
 
@@ -48,14 +55,27 @@ grep -q "^recorded 30 ticks of " "$log" || fail "no recording was written"
 cat "$log"
 grep -q "PASS neither won nor lost in 30 ticks" "$log" || fail "the recording replayed differently"
 
+# The HUD is drawn over the picture in its own colours: the crosshair's white at the window's
+# centre, the goal bar's shade (40, 40, 40) at its right end (the goal is not met at tick 30),
+# and the picture around them.
+"$system_python" - "$capture_dir/hud_30.png" <<'PY' || fail "the HUD is not drawn as expected over the picture"
+import sys
+from PIL import Image
+image = Image.open(sys.argv[1]).convert("RGB")
+assert image.size == (1280, 720), image.size
+centre, bar_end = image.getpixel((640, 360)), image.getpixel((int(0.37 * 1280), int(0.9425 * 720)))
+print("crosshair", centre, "goal bar", bar_end)
+assert centre == (255, 255, 255), centre
+assert bar_end == (40, 40, 40), bar_end
+assert len(set(image.crop((0, 0, 400, 300)).getdata())) > 50, "no picture behind the HUD"
+PY
+
 # The window's image at tick 40 matches the headless render of the same tick: the run is
 # recorded, the capture becomes the recording's image checkpoint, and `sightline replay`
 # renders tick 40 headless and compares (pixels off by more than 2/255: at most 0.5 %). The
 # window is the picture's size with the HUD off and no temporal upscaling (whose jittered rays a
-# single headless frame does not have), so the blit copies pixels one to one; the run above
-# played the default, upscaled picture with validation on.
-capture_dir=$(mktemp -d)
-trap 'rm -rf "$log" "$recording" "$home" "$capture_dir"' EXIT
+# single headless frame does not have), so the draw samples each texel at its centre, one to one;
+# the first run played the default, upscaled picture with validation on.
 env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
   "$sightline" play "$level" --validate --size 320x180 --window 320x180 --hud-off --no-upscale \
   --quit-after-ticks 40 --capture "$capture_dir/window_40.png" \
@@ -78,6 +98,23 @@ PY
   fail "the window's image at tick 40 differs from the headless render of tick 40"
 }
 cat "$log"
+
+# A window wider than the picture: black bars left and right, the picture between them.
+env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
+  "$sightline" play "$level" --validate --size 320x180 --window 400x180 --hud-off --no-upscale \
+  --quit-after-ticks 5 --capture "$capture_dir/bars_5.png" >"$log" 2>&1 ||
+  { cat "$log"; fail "the run in a wider window failed"; }
+grep -qi "validation" "$log" && { cat "$log"; fail "validation messages in the wider window"; }
+"$system_python" - "$capture_dir/bars_5.png" <<'PY' || fail "no black bars beside the picture"
+import sys
+from PIL import Image
+image = Image.open(sys.argv[1]).convert("RGB")
+assert image.size == (400, 180), image.size
+for x0, x1 in ((0, 40), (360, 400)):
+    bar = set(image.crop((x0, 0, x1, 180)).getdata())
+    assert bar == {(0, 0, 0)}, (x0, sorted(bar)[:5])
+assert len(set(image.crop((40, 0, 360, 180)).getdata())) > 50, "no picture between the bars"
+PY
 
 # Saved progress picks the first level not yet won; saved settings turn vsync off.
 mkdir -p "$XDG_DATA_HOME/sightline" "$XDG_CONFIG_HOME/sightline"
