@@ -6,6 +6,7 @@
 #include "render/barriers.hpp"
 #include "render/context.hpp"
 #include "render/denoiser.hpp"
+#include "render/fullscreen_pipeline.hpp"
 #include "render/ray_tracing_pipeline.hpp"
 #include "render/shader_compiler.hpp"
 #include "render/vulkan_error.hpp"
@@ -13,6 +14,10 @@
 
 namespace render {
 namespace {
+
+// The fragment resolve's colour attachments: the picture and the history
+// (UPSCALE_ATTACHMENT_DISPLAY and UPSCALE_ATTACHMENT_HISTORY).
+constexpr uint32_t kResolveAttachments = 2;
 
 // The radical inverse of `index` in `base`: 1/2, 1/4, 3/4, ... for base 2.
 float radicalInverse(uint32_t index, uint32_t base) {
@@ -84,7 +89,7 @@ void TemporalUpscaler::createRenderPass() {
   // Both attachments stay in GENERAL (the shaders read the history as a storage image, the
   // picture is copied from) and are written whole, so nothing is loaded; the barriers in
   // record() order the pass against everything else.
-  std::array<VkAttachmentDescription, 2> attachments{};
+  std::array<VkAttachmentDescription, kResolveAttachments> attachments{};
   attachments[UPSCALE_ATTACHMENT_DISPLAY].format = kDisplayFormat;
   attachments[UPSCALE_ATTACHMENT_HISTORY].format = kHistoryFormat;
   for (VkAttachmentDescription& attachment : attachments) {
@@ -96,7 +101,7 @@ void TemporalUpscaler::createRenderPass() {
     attachment.initialLayout = VK_IMAGE_LAYOUT_GENERAL;
     attachment.finalLayout = VK_IMAGE_LAYOUT_GENERAL;
   }
-  std::array<VkAttachmentReference, 2> references{};
+  std::array<VkAttachmentReference, kResolveAttachments> references{};
   references[UPSCALE_ATTACHMENT_DISPLAY] = {UPSCALE_ATTACHMENT_DISPLAY, VK_IMAGE_LAYOUT_GENERAL};
   references[UPSCALE_ATTACHMENT_HISTORY] = {UPSCALE_ATTACHMENT_HISTORY, VK_IMAGE_LAYOUT_GENERAL};
   VkSubpassDescription subpass{};
@@ -112,7 +117,7 @@ void TemporalUpscaler::createRenderPass() {
           "vkCreateRenderPass");
   context_.setName(renderPass_, VK_OBJECT_TYPE_RENDER_PASS, "temporal upscale");
   for (uint32_t parity = 0; parity < 2; ++parity) {
-    std::array<VkImageView, 2> views{};
+    std::array<VkImageView, kResolveAttachments> views{};
     views[UPSCALE_ATTACHMENT_DISPLAY] = display_->view();
     views[UPSCALE_ATTACHMENT_HISTORY] = history_[parity]->view();
     VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
@@ -147,78 +152,12 @@ void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout
     const ShaderDefines defines = resolveDefines(steadyView, mirrors);
     resolves_[steadyView] =
         attachments_
-            ? createGraphicsPipeline(compiler, layout, defines, resolveName(steadyView))
+            ? createFullscreenPipeline(context_, compiler, layout, renderPass_, kResolveAttachments,
+                                       "temporal_upscale.frag", defines, resolveName(steadyView))
             : createComputePipeline(context_, layout,
                                     compiler.compile("temporal_upscale.comp", defines).spirv,
                                     resolveName(steadyView));
   }
-}
-
-VkPipeline TemporalUpscaler::createGraphicsPipeline(ShaderCompiler& compiler,
-                                                    VkPipelineLayout layout,
-                                                    const ShaderDefines& defines,
-                                                    const char* name) {
-  const VkDevice device = context_.device();
-  const std::array<VkShaderModule, 2> modules = {
-      createShaderModule(context_, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
-      createShaderModule(context_, compiler.compile("temporal_upscale.frag", defines).spirv, name)};
-  std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
-  stages[0] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = modules[0];
-  stages[0].pName = "main";
-  stages[1] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = modules[1];
-  stages[1].pName = "main";
-  VkPipelineVertexInputStateCreateInfo vertexInput{
-      VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  VkPipelineInputAssemblyStateCreateInfo assembly{
-      VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
-  const VkViewport viewport{0.0f, 0.0f, float(outputWidth_), float(outputHeight_), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {outputWidth_, outputHeight_}};
-  VkPipelineViewportStateCreateInfo viewportState{
-      VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewportState.viewportCount = 1;
-  viewportState.pViewports = &viewport;
-  viewportState.scissorCount = 1;
-  viewportState.pScissors = &scissor;
-  VkPipelineRasterizationStateCreateInfo rasterization{
-      VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  rasterization.polygonMode = VK_POLYGON_MODE_FILL;
-  rasterization.cullMode = VK_CULL_MODE_NONE;
-  rasterization.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{
-      VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
-  std::array<VkPipelineColorBlendAttachmentState, 2> blendAttachments{};
-  for (VkPipelineColorBlendAttachmentState& attachment : blendAttachments) {
-    attachment.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
-                                VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
-  }
-  VkPipelineColorBlendStateCreateInfo blend{
-      VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  blend.attachmentCount = uint32_t(blendAttachments.size());
-  blend.pAttachments = blendAttachments.data();
-  VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO};
-  info.stageCount = uint32_t(stages.size());
-  info.pStages = stages.data();
-  info.pVertexInputState = &vertexInput;
-  info.pInputAssemblyState = &assembly;
-  info.pViewportState = &viewportState;
-  info.pRasterizationState = &rasterization;
-  info.pMultisampleState = &multisample;
-  info.pColorBlendState = &blend;
-  info.layout = layout;
-  info.renderPass = renderPass_;
-  VkPipeline pipeline = VK_NULL_HANDLE;
-  const VkResult result =
-      vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline);
-  for (VkShaderModule module : modules) vkDestroyShaderModule(device, module, nullptr);
-  vkCheck(result, "vkCreateGraphicsPipelines");
-  context_.setName(pipeline, VK_OBJECT_TYPE_PIPELINE, name);
-  return pipeline;
 }
 
 VkPipelineStageFlags TemporalUpscaler::pictureStage() const {
@@ -263,6 +202,7 @@ void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
   vkCmdBindDescriptorSets(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &set, 0,
                           nullptr);
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_GRAPHICS, resolve);
+  setDrawArea(commands, begin.renderArea);
   vkCmdDraw(commands, 3, 1, 0, 0);
   vkCmdEndRenderPass(commands);
 }

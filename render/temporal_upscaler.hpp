@@ -58,8 +58,6 @@ class TemporalUpscaler {
   static constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_UNORM;
   static constexpr VkFormat kHistoryFormat = VK_FORMAT_R32G32B32A32_UINT;
   void createRenderPass();
-  VkPipeline createGraphicsPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
-                                    const ShaderDefines& defines, const char* name);
 
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;

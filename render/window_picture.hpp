@@ -35,8 +35,6 @@ class WindowPicture {
 
  private:
   void release();
-  VkPipeline createPipeline(ShaderCompiler& compiler, VkRenderPass renderPass,
-                            const char* fragmentShader, const char* name) const;
 
   const Context& context_;
   VkSampler sampler_ = VK_NULL_HANDLE;
