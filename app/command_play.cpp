@@ -117,8 +117,9 @@ int commandPlay(const Options& options) {
   contextSettings.extraInstanceExtensions.assign(extensions, extensions + extensionCount);
   contextSettings.presentation = true;
 
-  // The presenter (its surface) must go before the context (its instance).
+  // Compiles the presenter's shaders and, later, the renderer's.
   render::ShaderCompiler compiler = makeCompiler(findDataRoot());
+  // The presenter (its surface) must go before the context (its instance).
   std::unique_ptr<render::Context> context;
   std::unique_ptr<render::Presenter> presenter;
   try {

@@ -37,7 +37,7 @@ struct Options {
   bool lightRoutes = true;       // --no-light-routes: direct light only
   // --upscale WxH: temporal upscaling to this output size (render, bench, bench-quality)
   std::optional<std::pair<uint32_t, uint32_t>> upscaleSize;
-  bool upscale = true;      // play --no-upscale: the window's blit scales the picture instead
+  bool upscale = true;      // play --no-upscale: the window's bilinear draw scales the picture
   bool fixedScale = false;  // play --fixed-scale: no dynamic render scale
   std::string device;
   bool validate = false;

@@ -13,7 +13,8 @@ enum class FramePart {
   Ticks,      // the world's fixed ticks, with the probe frames they render
   Picture,    // the picture: trace, denoise, tonemap
   Interface,  // the HUD's and menus' ImGui frame
-  Present,    // blit to the window, overlay pass, waits for a swapchain image, present
+  Present,    // the window's render pass (picture, HUD, overlay), waits for a swapchain image,
+              // present
 };
 inline constexpr std::size_t kFrameParts = 5;
 

@@ -14,7 +14,8 @@ struct PlayOptions {
   std::optional<std::pair<uint32_t, uint32_t>> pictureSize;
   uint64_t quitAfterTicks = 0;  // exit cleanly after this many ticks (0: play on)
   bool hudOff = false;          // no heads-up display or text over the picture
-  // Temporal upscaling of the picture to the window's size (false: the window's blit scales it).
+  // Temporal upscaling of the picture to the window's size (false: the window's bilinear draw
+  // scales it).
   bool upscale = true;
   // No dynamic render scale (--fixed-scale); --size fixes the picture too.
   bool fixedScale = false;

@@ -14,9 +14,17 @@ VkPipeline createFullscreenPipeline(const Context& context, ShaderCompiler& comp
                                     uint32_t colourAttachments, const std::string& fragmentShader,
                                     const ShaderDefines& defines, const std::string& name) {
   const VkDevice device = context.device();
-  const std::array<VkShaderModule, 2> modules = {
-      createShaderModule(context, compiler.compile("fullscreen.vert").spirv, "fullscreen"),
-      createShaderModule(context, compiler.compile(fragmentShader, defines).spirv, name)};
+  // Both compiled before either module is made, so that nothing is left when one fails.
+  const std::vector<uint32_t> vertexCode = compiler.compile("fullscreen.vert").spirv;
+  const std::vector<uint32_t> fragmentCode = compiler.compile(fragmentShader, defines).spirv;
+  std::array<VkShaderModule, 2> modules{};
+  modules[0] = createShaderModule(context, vertexCode, "fullscreen");
+  try {
+    modules[1] = createShaderModule(context, fragmentCode, name);
+  } catch (...) {
+    vkDestroyShaderModule(device, modules[0], nullptr);
+    throw;
+  }
   std::array<VkPipelineShaderStageCreateInfo, 2> stages{};
   for (size_t i = 0; i < stages.size(); ++i) {
     stages[i] = {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};

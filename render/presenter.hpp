@@ -50,7 +50,8 @@ class Presenter {
  public:
   // The context must have been made with ContextOptions::presentation and the instance
   // extensions glfwGetRequiredInstanceExtensions names. `compiler` compiles the shaders that
-  // draw the picture and the HUD. Throws RenderError.
+  // draw the picture and the HUD. Throws RenderError, or ShaderCompileError when one of those
+  // shaders does not compile.
   Presenter(const Context& context, GLFWwindow* window, bool vsync, ShaderCompiler& compiler);
   ~Presenter();
   Presenter(const Presenter&) = delete;

@@ -133,9 +133,9 @@ class Renderer {
   // shown size (shownWidth() x shownHeight()).
   const std::vector<uint8_t>& pixels() const { return pixels_; }
   // The last frame's display image at the output size (R8G8B8A8_UNORM holding sRGB-encoded
-  // bytes, usable as a
-  // transfer source). After renderFrame it is in VK_IMAGE_LAYOUT_GENERAL; a user that changes
-  // the layout (a presenter's blit) must put it back to GENERAL before the next frame.
+  // bytes, usable as a transfer source and sampled, as the presenter does, in
+  // VK_IMAGE_LAYOUT_GENERAL). After renderFrame it is in GENERAL; a user that changes the layout
+  // must put it back to GENERAL before the next frame.
   VkImage outputImage() const;
   VkImageView outputView() const;  // of outputImage(), which can also be sampled
   // The last frame's linear radiance before exposure and tonemap, without the soft lights'

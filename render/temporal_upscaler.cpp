@@ -87,8 +87,8 @@ TemporalUpscaler::~TemporalUpscaler() {
 
 void TemporalUpscaler::createRenderPass() {
   // Both attachments stay in GENERAL (the shaders read the history as a storage image, the
-  // picture is copied from) and are written whole, so nothing is loaded; the barriers in
-  // record() order the pass against everything else.
+  // picture is copied from and sampled by the window) and are written whole, so nothing is loaded;
+  // the barriers in record() order the pass against everything else.
   std::array<VkAttachmentDescription, kResolveAttachments> attachments{};
   attachments[UPSCALE_ATTACHMENT_DISPLAY].format = kDisplayFormat;
   attachments[UPSCALE_ATTACHMENT_HISTORY].format = kHistoryFormat;

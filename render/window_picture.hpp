@@ -1,9 +1,8 @@
 #pragma once
 // Draws into a swapchain image inside the presenter's render pass: the renderer's picture,
 // scaled into its rectangle of the window, and solid rectangles (the HUD's bars and frames,
-// the black bars beside a picture that does not fill the window). On lavapipe these draws cost
-// less than the transfer blits they replaced, one for the picture and one for each HUD
-// rectangle (docs/PERFORMANCE.md, session 34).
+// the black bars beside a picture that does not fill the window). What this costs on lavapipe
+// against transfer blits: docs/PERFORMANCE.md, session 34.
 #include <array>
 
 #include <vulkan/vulkan.h>
@@ -16,7 +15,8 @@ class ShaderCompiler;
 class WindowPicture {
  public:
   // `renderPass`: the presenter's, whose one subpass has one colour attachment. `filter`
-  // scales the picture. Throws RenderError.
+  // scales the picture. Throws RenderError or ShaderCompileError. Its owner destroys it only
+  // once no submitted draw of it is pending.
   WindowPicture(const Context& context, ShaderCompiler& compiler, VkRenderPass renderPass,
                 VkFilter filter);
   ~WindowPicture();

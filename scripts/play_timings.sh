@@ -32,8 +32,8 @@ for level in "${levels[@]}"; do
     grep -E "^(playing|quit after|frame parts|picture scale)" || true
   "$binary" bench "$level" --frames 60 --embree-frames 0 --size 320x180 2>&1 |
     grep -E "^${name} " | head -1 | awk '{print "bench: " $4 " ms, " $5 " fps"}'  || true
-  # What the window's picture costs before the blit: on a CPU driver play upscales temporally
-  # to half the 1280x720 window.
+  # What the window's picture costs before it is drawn into the window: on a CPU driver play
+  # upscales temporally to half the 1280x720 window.
   "$binary" bench "$level" --frames 60 --embree-frames 0 --size 320x180 --upscale 640x360 2>&1 |
     grep -E "^${name} " | head -1 |
     awk '{print "bench --upscale 640x360: " $4 " ms, " $5 " fps"}' || true

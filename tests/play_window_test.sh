@@ -56,8 +56,9 @@ cat "$log"
 grep -q "PASS neither won nor lost in 30 ticks" "$log" || fail "the recording replayed differently"
 
 # The HUD is drawn over the picture in its own colours: the crosshair's white at the window's
-# centre, the goal bar's shade (40, 40, 40) at its right end (the goal is not met at tick 30),
-# and the picture around them.
+# centre, the goal bar's shade (40, 40, 40) near its right end (play/hud.cpp: the bar spans
+# 0.02-0.38 of the width, 0.93-0.955 of the height; the goal is not met at tick 30), and the
+# picture around them.
 "$system_python" - "$capture_dir/hud_30.png" <<'PY' || fail "the HUD is not drawn as expected over the picture"
 import sys
 from PIL import Image
