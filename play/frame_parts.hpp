@@ -13,8 +13,7 @@ enum class FramePart {
   Ticks,      // the world's fixed ticks, with the probe frames they render
   Picture,    // the picture: trace, denoise, tonemap
   Interface,  // the HUD's and menus' ImGui frame
-  Present,    // the window's render pass (picture, HUD, overlay), waits for a swapchain image,
-              // present
+  Present,    // the window's pass (picture, HUD, overlay), a swapchain image's wait, present
 };
 inline constexpr std::size_t kFrameParts = 5;
 
