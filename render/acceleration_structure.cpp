@@ -306,4 +306,33 @@ void TopLevel::record(VkCommandBuffer commands, bool update) {
   context_->rt().cmdBuild(commands, 1, &info, &ranges);
 }
 
+namespace {
+
+std::vector<TlasInstance> membersOf(std::span<const TlasInstance> sceneInstances,
+                                    std::span<const uint32_t> members) {
+  std::vector<TlasInstance> chosen;
+  chosen.reserve(members.size());
+  for (const uint32_t member : members) chosen.push_back(sceneInstances[member]);
+  return chosen;
+}
+
+}  // namespace
+
+TopLevelSubset::TopLevelSubset(const Context& context, std::span<const TlasInstance> sceneInstances,
+                               std::vector<uint32_t> members)
+    : members_(std::move(members)), level_(context, membersOf(sceneInstances, members_)) {}
+
+void TopLevelSubset::recordUpdate(VkCommandBuffer commands,
+                                  std::span<const glm::mat4> sceneObjectToWorld) {
+  std::vector<glm::mat4> transforms;
+  transforms.reserve(members_.size());
+  for (const uint32_t member : members_) transforms.push_back(sceneObjectToWorld[member]);
+  level_.recordUpdate(commands, transforms);
+}
+
+void TopLevelSubset::setVisible(uint32_t instance, bool visible) {
+  const auto member = std::find(members_.begin(), members_.end(), instance);
+  if (member != members_.end()) level_.setVisible(uint32_t(member - members_.begin()), visible);
+}
+
 }  // namespace render

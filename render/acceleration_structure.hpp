@@ -98,4 +98,24 @@ class TopLevel {
   AccelerationStructure structure_;
 };
 
+// A top level over some of the scene's instances, for rays that see only those: its entry k is
+// the scene's instance members()[k].
+class TopLevelSubset {
+ public:
+  TopLevelSubset(const Context& context, std::span<const TlasInstance> sceneInstances,
+                 std::vector<uint32_t> members);
+
+  // As TopLevel::recordUpdate, from the transforms of all the scene's instances.
+  void recordUpdate(VkCommandBuffer commands, std::span<const glm::mat4> sceneObjectToWorld);
+  // As TopLevel::setVisible, for the scene's instance `instance` (nothing if not a member).
+  void setVisible(uint32_t instance, bool visible);
+
+  const AccelerationStructure& structure() const { return level_.structure(); }
+  const std::vector<uint32_t>& members() const { return members_; }
+
+ private:
+  std::vector<uint32_t> members_;
+  TopLevel level_;
+};
+
 }  // namespace render

@@ -324,6 +324,7 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   }
   bottomLevels_ = buildBottomLevels(context, geometries);
   std::vector<TlasInstance> tlasInstances;
+  std::vector<uint32_t> glassMembers, seenFromEye;
   for (uint32_t i = 0; i < scene.instances.size(); ++i) {
     const scene::InstanceDesc& instance = scene.instances[i];
     const bool glass = scene.materials[instance.material].kind == scene::MaterialKind::Glass;
@@ -344,14 +345,14 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
       tlasInstance.flags = VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
     }
     tlasInstances.push_back(tlasInstance);
-    if (glass) glassMembers_.push_back(i);
+    if (glass) glassMembers.push_back(i);
+    if (!instance.playerBody) seenFromEye.push_back(i);
   }
   topLevel_ = std::make_unique<TopLevel>(context, tlasInstances);
-  if (!glassMembers_.empty()) {
-    std::vector<TlasInstance> glassInstances;
-    for (const uint32_t member : glassMembers_) glassInstances.push_back(tlasInstances[member]);
-    glassLevel_ = std::make_unique<TopLevel>(context, glassInstances);
-  }
+  if (!glassMembers.empty())
+    glassLevel_ = std::make_unique<TopLevelSubset>(context, tlasInstances, std::move(glassMembers));
+  if (!seenFromEye.empty() && seenFromEye.size() < tlasInstances.size())
+    eyeLevel_ = std::make_unique<TopLevelSubset>(context, tlasInstances, std::move(seenFromEye));
 
   hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
                                              VK_FORMAT_R32G32B32A32_SFLOAT,
@@ -803,9 +804,8 @@ void Renderer::setInstanceVisible(uint32_t instance, bool visible) {
     throw RenderError("setInstanceVisible: no such instance");
   if (instanceVisible_[instance] == visible) return;
   topLevel_->setVisible(instance, visible);
-  const auto glassMember = std::find(glassMembers_.begin(), glassMembers_.end(), instance);
-  if (glassMember != glassMembers_.end())
-    glassLevel_->setVisible(uint32_t(glassMember - glassMembers_.begin()), visible);
+  if (glassLevel_) glassLevel_->setVisible(instance, visible);
+  if (eyeLevel_) eyeLevel_->setVisible(instance, visible);
   instanceVisible_[instance] = visible;
   tlasStale_ = true;
   sceneChanged_ = true;
@@ -886,6 +886,10 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
   uniforms.mirrorBounces = glm::uvec4(mirrorBounces_, 0u, 0u, 0u);
+  const VkDeviceAddress sceneLevel = topLevel_->structure().address();
+  const VkDeviceAddress eyeLevel = eyeLevel_ ? eyeLevel_->structure().address() : sceneLevel;
+  uniforms.topLevels = glm::uvec4(uint32_t(sceneLevel), uint32_t(sceneLevel >> 32),
+                                  uint32_t(eyeLevel), uint32_t(eyeLevel >> 32));
   // Reprojection needs the previous frame's camera; without one the history starts afresh.
   // A jump of the camera (a cut or teleport) is treated like an explicit reset: reprojecting
   // across it would only smear the old view.
@@ -968,12 +972,8 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     for (const glm::mat4& transform : currentTransforms_)
       renderTransforms.push_back(toRenderSpace(transform, *renderOrigin_));
     topLevel_->recordUpdate(commands, renderTransforms);
-    if (glassLevel_) {
-      std::vector<glm::mat4> glassTransforms;
-      for (const uint32_t member : glassMembers_)
-        glassTransforms.push_back(renderTransforms[member]);
-      glassLevel_->recordUpdate(commands, glassTransforms);
-    }
+    if (glassLevel_) glassLevel_->recordUpdate(commands, renderTransforms);
+    if (eyeLevel_) eyeLevel_->recordUpdate(commands, renderTransforms);
     tlasStale_ = false;
     ++tlasUpdates_;
     memoryBarrier(commands, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,

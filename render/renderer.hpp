@@ -234,10 +234,14 @@ class Renderer {
   Buffer readback_;
   std::vector<AccelerationStructure> bottomLevels_;
   std::unique_ptr<TopLevel> topLevel_;
-  // The glass instances alone, which the glass rays traverse (none: they use topLevel_); its
-  // entry k is instance glassMembers_[k].
-  std::unique_ptr<TopLevel> glassLevel_;
-  std::vector<uint32_t> glassMembers_;
+  // The glass instances alone, which the glass rays traverse (none: they use topLevel_).
+  std::unique_ptr<TopLevelSubset> glassLevel_;
+  // Every instance but the player's body, which the camera rays traverse (none: the scene has no
+  // body, and they use topLevel_). From the eye the body is never seen, but the eye is inside its
+  // box, so in topLevel_ every camera ray visited the nodes over the body and what lies next to
+  // it (01 First Light at 320x180 on lavapipe: 0.8-1.0 ms a frame; docs/PERFORMANCE.md, session
+  // 35).
+  std::unique_ptr<TopLevelSubset> eyeLevel_;
   std::vector<glm::mat4> pendingTransforms_;  // world space, for the next frame
   bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_
   uint64_t tlasUpdates_ = 0;

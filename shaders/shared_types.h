@@ -172,6 +172,10 @@ struct FrameUniforms {
   // DENOISER_STEADY_MAX_HISTORY (a still view of a steady scene; RendererOptions::
   // steadyPenumbraSamples)
   uvec4 previousSize;
+  // The device addresses of two top-level structures, each as low and high 32 bits: xy the whole
+  // scene's, zw the one camera rays trace (every instance but the player's body; xy again when
+  // the scene has no body)
+  uvec4 topLevels;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "game/player_body.hpp"
 #include "game/primitives.hpp"
 #include "render/pipeline_variant.hpp"
 #include "scene/color.hpp"
@@ -111,6 +112,49 @@ TEST_F(GlassMirrorTest, glass_follows_its_instance_moved_or_hidden_and_opaque_in
   transforms[0] = at({0, 0, -0.5f});  // the wall in front of the pane: no tint
   renderer.setInstanceTransforms(transforms);
   EXPECT_EQ(centre(), white);
+}
+
+TEST_F(GlassMirrorTest, the_eye_sees_past_the_players_body_and_follows_instances_moved_or_hidden) {
+  // Camera rays trace a structure without the player's body (the eye is inside the body's box):
+  // it must show what the scene's does, an instance moved or hidden too, and a mirror ahead
+  // must still show the body.
+  SceneBuilder builder = wallScene();
+  builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
+                   builder.material(emissive(glm::vec3(1.0f, 0.0f, 0.0f))), at({0, 0, -1}));
+  const uint32_t body = builder.instance(builder.mesh(game::playerBodyMesh()),
+                                         builder.material(game::playerBodyMaterial()),
+                                         game::playerBodyTransform({0, -1.65f, 0}));
+  builder.scene.instances[body].playerBody = true;
+  render::RendererOptions options;
+  options.width = 15;
+  options.height = 15;
+  render::Renderer renderer(context(), compiler(), builder.scene, options);
+  scene::FrameDesc frame;
+  frame.tonemap = scene::Tonemap::Identity;
+  auto centre = [&]() {
+    renderer.renderFrame(frame);
+    const render::Rgba8Image image{15, 15, renderer.pixels()};
+    return glm::ivec3(channel(image, 7, 7, 0), channel(image, 7, 7, 1), channel(image, 7, 7, 2));
+  };
+  const glm::ivec3 red(255, 0, 0), white(255);
+  EXPECT_EQ(centre(), red);
+  std::vector<glm::mat4> transforms = {at({0, 0, -2}), at({30, 0, -1}),  // the panel aside
+                                       game::playerBodyTransform({0, -1.65f, 0})};
+  renderer.setInstanceTransforms(transforms);
+  EXPECT_EQ(centre(), white);
+  transforms[1] = at({0, 0, -1});  // back in front
+  renderer.setInstanceTransforms(transforms);
+  EXPECT_EQ(centre(), red);
+  renderer.setInstanceVisible(1, false);
+  EXPECT_EQ(centre(), white);
+  renderer.setInstanceVisible(1, true);
+  EXPECT_EQ(centre(), red);
+
+  // The same scene with the panel a mirror facing the camera: the ray back meets the body.
+  builder.scene.materials[builder.scene.instances[1].material] = mirrorMaterial();
+  render::Renderer mirrored(context(), compiler(), builder.scene, options);
+  mirrored.renderFrame(frame);
+  EXPECT_EQ(mirrored.pixelPaths()[7 * 15 + 7].finalInstance, body);
 }
 
 TEST_F(GlassMirrorTest, overlapping_panes_multiply_and_creation_order_does_not_matter) {
