@@ -1,6 +1,6 @@
 #pragma once
-// Bottom-level structures (one per mesh, built once, compacted) and the top-level structure
-// over instances (built once, then updated in place when instances move).
+// Bottom-level structures (one per mesh, built once, compacted) and top-level structures over
+// instances, all of them or some (built once, then updated in place when instances move).
 #include <span>
 #include <vector>
 

@@ -7,6 +7,7 @@
 namespace render::gpu {
 static_assert(sizeof(FrameUniforms) == 19 * 16, "FrameUniforms must match the GLSL block");
 static_assert(offsetof(FrameUniforms, sizeFrameLights) == 7 * 16);
+static_assert(offsetof(FrameUniforms, topLevels) == 18 * 16);
 static_assert(sizeof(GpuInstance) == 64);
 static_assert(sizeof(GpuMaterial) == 128 + 32 * TEXTURE_ROLES);
 static_assert(offsetof(GpuMaterial, kindShading) == 64);

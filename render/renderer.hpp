@@ -237,10 +237,10 @@ class Renderer {
   // The glass instances alone, which the glass rays traverse (none: they use topLevel_).
   std::unique_ptr<TopLevelSubset> glassLevel_;
   // Every instance but the player's body, which the camera rays traverse (none: the scene has no
-  // body, and they use topLevel_). From the eye the body is never seen, but the eye is inside its
-  // box, so in topLevel_ every camera ray visited the nodes over the body and what lies next to
-  // it, whose mask lavapipe tests only on reaching the instance (01 First Light's trace at
-  // 320x180 on lavapipe: 0.7-1.3 ms a frame; docs/PERFORMANCE.md, session 35).
+  // body, or nothing else, and they use topLevel_). From the eye the body is never seen, but the
+  // eye is inside its box, so in topLevel_ every camera ray visited the nodes over the body and
+  // what lies next to it, whose mask lavapipe tests only on reaching the instance (01 First
+  // Light's trace at 320x180 on lavapipe: 0.7-1.3 ms a frame; docs/PERFORMANCE.md, session 35).
   std::unique_ptr<TopLevelSubset> eyeLevel_;
   std::vector<glm::mat4> pendingTransforms_;  // world space, for the next frame
   bool tlasStale_ = false;  // the TLAS needs render-space transforms of currentTransforms_

@@ -1,4 +1,5 @@
-// The scene as the ray tracing stages see it.
+// The scene as the ray tracing stages see it. (Camera rays trace a structure without the
+// player's body, which ray-gen finds by its address: FrameUniforms::topLevels.)
 layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT sceneTlas;
 layout(set = 0, binding = BINDING_GLASS_TLAS) uniform accelerationStructureEXT glassTlas;
 layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {

@@ -174,7 +174,7 @@ struct FrameUniforms {
   uvec4 previousSize;
   // The device addresses of two top-level structures, each as low and high 32 bits: xy the whole
   // scene's, zw the one camera rays trace (every instance but the player's body; xy again when
-  // the scene has no body)
+  // there is no such structure: no body, or nothing but the body)
   uvec4 topLevels;
 };
 

@@ -117,14 +117,18 @@ TEST_F(GlassMirrorTest, glass_follows_its_instance_moved_or_hidden_and_opaque_in
 TEST_F(GlassMirrorTest, the_eye_sees_past_the_players_body_and_follows_instances_moved_or_hidden) {
   // Camera rays trace a structure without the player's body (the eye is inside the body's box):
   // it must show what the scene's does, an instance moved or hidden too, and a mirror ahead
-  // must still show the body.
-  SceneBuilder builder = wallScene();
-  builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
-                   builder.material(emissive(glm::vec3(1.0f, 0.0f, 0.0f))), at({0, 0, -1}));
+  // must still show the body. The body comes first, so the structure's entries are not the
+  // scene's instance numbers.
+  SceneBuilder builder;
   const uint32_t body = builder.instance(builder.mesh(game::playerBodyMesh()),
                                          builder.material(game::playerBodyMaterial()),
                                          game::playerBodyTransform({0, -1.65f, 0}));
   builder.scene.instances[body].playerBody = true;
+  builder.instance(builder.mesh(game::primitives::box({20, 20, 0.1f})),
+                   builder.material(emissive(glm::vec3(1.0f))), at({0, 0, -2}));
+  const uint32_t panel =
+      builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
+                       builder.material(emissive(glm::vec3(1.0f, 0.0f, 0.0f))), at({0, 0, -1}));
   render::RendererOptions options;
   options.width = 15;
   options.height = 15;
@@ -138,20 +142,20 @@ TEST_F(GlassMirrorTest, the_eye_sees_past_the_players_body_and_follows_instances
   };
   const glm::ivec3 red(255, 0, 0), white(255);
   EXPECT_EQ(centre(), red);
-  std::vector<glm::mat4> transforms = {at({0, 0, -2}), at({30, 0, -1}),  // the panel aside
-                                       game::playerBodyTransform({0, -1.65f, 0})};
+  std::vector<glm::mat4> transforms = {game::playerBodyTransform({0, -1.65f, 0}), at({0, 0, -2}),
+                                       at({30, 0, -1})};  // the panel aside
   renderer.setInstanceTransforms(transforms);
   EXPECT_EQ(centre(), white);
-  transforms[1] = at({0, 0, -1});  // back in front
+  transforms[panel] = at({0, 0, -1});  // back in front
   renderer.setInstanceTransforms(transforms);
   EXPECT_EQ(centre(), red);
-  renderer.setInstanceVisible(1, false);
+  renderer.setInstanceVisible(panel, false);
   EXPECT_EQ(centre(), white);
-  renderer.setInstanceVisible(1, true);
+  renderer.setInstanceVisible(panel, true);
   EXPECT_EQ(centre(), red);
 
   // The same scene with the panel a mirror facing the camera: the ray back meets the body.
-  builder.scene.materials[builder.scene.instances[1].material] = mirrorMaterial();
+  builder.scene.materials[builder.scene.instances[panel].material] = mirrorMaterial();
   render::Renderer mirrored(context(), compiler(), builder.scene, options);
   mirrored.renderFrame(frame);
   EXPECT_EQ(mirrored.pixelPaths()[7 * 15 + 7].finalInstance, body);
