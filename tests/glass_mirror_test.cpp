@@ -59,6 +59,23 @@ class GlassMirrorTest : public test::VulkanTest {
         {width, height, renderer.pixels()}, renderer.pixelPaths(), renderer.pipelineDescription()};
   }
 
+  // A 15x15 picture, for a renderer kept across changes to its scene.
+  static render::RendererOptions smallView() {
+    render::RendererOptions options;
+    options.width = 15;
+    options.height = 15;
+    return options;
+  }
+
+  // Renders a frame of a smallView() renderer (identity tonemap) and returns its centre pixel.
+  static glm::ivec3 centreAfterFrame(render::Renderer& renderer) {
+    scene::FrameDesc frame;
+    frame.tonemap = scene::Tonemap::Identity;
+    renderer.renderFrame(frame);
+    const render::Rgba8Image image{15, 15, renderer.pixels()};
+    return glm::ivec3(channel(image, 7, 7, 0), channel(image, 7, 7, 1), channel(image, 7, 7, 2));
+  }
+
   // A white emissive wall 2 m ahead filling the view.
   static SceneBuilder wallScene() {
     SceneBuilder builder;
@@ -85,17 +102,8 @@ TEST_F(GlassMirrorTest, glass_follows_its_instance_moved_or_hidden_and_opaque_in
   SceneBuilder builder = wallScene();
   builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
                    builder.material(glassMaterial(tint)), at({0, 0, -1}));
-  render::RendererOptions options;
-  options.width = 15;
-  options.height = 15;
-  render::Renderer renderer(context(), compiler(), builder.scene, options);
-  scene::FrameDesc frame;
-  frame.tonemap = scene::Tonemap::Identity;
-  auto centre = [&]() {
-    renderer.renderFrame(frame);
-    const render::Rgba8Image image{15, 15, renderer.pixels()};
-    return glm::ivec3(channel(image, 7, 7, 0), channel(image, 7, 7, 1), channel(image, 7, 7, 2));
-  };
+  render::Renderer renderer(context(), compiler(), builder.scene, smallView());
+  auto centre = [&]() { return centreAfterFrame(renderer); };
   const glm::ivec3 tinted(expectedByte(tint.r), expectedByte(tint.g), expectedByte(tint.b));
   const glm::ivec3 white(255);
   EXPECT_EQ(centre(), tinted);
@@ -129,17 +137,8 @@ TEST_F(GlassMirrorTest, the_eye_sees_past_the_players_body_and_follows_instances
   const uint32_t panel =
       builder.instance(builder.mesh(game::primitives::box({4, 4, 0.02f})),
                        builder.material(emissive(glm::vec3(1.0f, 0.0f, 0.0f))), at({0, 0, -1}));
-  render::RendererOptions options;
-  options.width = 15;
-  options.height = 15;
-  render::Renderer renderer(context(), compiler(), builder.scene, options);
-  scene::FrameDesc frame;
-  frame.tonemap = scene::Tonemap::Identity;
-  auto centre = [&]() {
-    renderer.renderFrame(frame);
-    const render::Rgba8Image image{15, 15, renderer.pixels()};
-    return glm::ivec3(channel(image, 7, 7, 0), channel(image, 7, 7, 1), channel(image, 7, 7, 2));
-  };
+  render::Renderer renderer(context(), compiler(), builder.scene, smallView());
+  auto centre = [&]() { return centreAfterFrame(renderer); };
   const glm::ivec3 red(255, 0, 0), white(255);
   EXPECT_EQ(centre(), red);
   std::vector<glm::mat4> transforms = {game::playerBodyTransform({0, -1.65f, 0}), at({0, 0, -2}),
@@ -156,8 +155,8 @@ TEST_F(GlassMirrorTest, the_eye_sees_past_the_players_body_and_follows_instances
 
   // The same scene with the panel a mirror facing the camera: the ray back meets the body.
   builder.scene.materials[builder.scene.instances[panel].material] = mirrorMaterial();
-  render::Renderer mirrored(context(), compiler(), builder.scene, options);
-  mirrored.renderFrame(frame);
+  render::Renderer mirrored(context(), compiler(), builder.scene, smallView());
+  centreAfterFrame(mirrored);
   EXPECT_EQ(mirrored.pixelPaths()[7 * 15 + 7].finalInstance, body);
 }
 
