@@ -99,7 +99,7 @@ class TopLevel {
 };
 
 // A top level over some of the scene's instances, for rays that see only those: its entry k is
-// the scene's instance members()[k].
+// the scene's instance members[k].
 class TopLevelSubset {
  public:
   TopLevelSubset(const Context& context, std::span<const TlasInstance> sceneInstances,
@@ -111,7 +111,6 @@ class TopLevelSubset {
   void setVisible(uint32_t instance, bool visible);
 
   const AccelerationStructure& structure() const { return level_.structure(); }
-  const std::vector<uint32_t>& members() const { return members_; }
 
  private:
   std::vector<uint32_t> members_;
