@@ -47,4 +47,25 @@ std::string FramePartTimes::partsText(unsigned long long probeFrames) const {
   return text + item;
 }
 
+void FramePartTimes::recordPicture(const render::FrameStats& stats) {
+  traceMs_.push_back(stats.gpu.traceMs);
+  denoiseMs_.push_back(stats.gpu.denoiseMs);
+  tonemapMs_.push_back(stats.gpu.tonemapMs);
+  submitToFenceMs_.push_back(stats.milliseconds);
+}
+
+std::string FramePartTimes::pictureText() const {
+  if (submitToFenceMs_.empty()) return "";
+  auto median = [](const std::vector<double>& times) {
+    return render::frameTimePercentiles(times).p50;
+  };
+  char text[192];
+  std::snprintf(text, sizeof text,
+                "picture passes: trace %.2f  denoise %.2f  tonemap and upscale %.2f  submit to "
+                "fence %.2f ms (GPU medians, host median; %zu pictures)",
+                median(traceMs_), median(denoiseMs_), median(tonemapMs_), median(submitToFenceMs_),
+                submitToFenceMs_.size());
+  return text;
+}
+
 }  // namespace play

@@ -86,6 +86,7 @@ int Game::run(const fs::path& firstLevel) {
     if (quitting && options_.capture) presenter_.captureNextPresent();
     parts.start(FramePart::Picture);
     played_.simulation->renderPicture(false);
+    parts.recordPicture(played_.simulation->lastPictureStats());
     parts.start(FramePart::Interface);
     const std::vector<render::HudRect> hud =
         options_.hudOff ? std::vector<render::HudRect>{} : hudRects(*played_.simulation);
@@ -116,6 +117,8 @@ int Game::run(const fs::path& firstLevel) {
                   double(framesShown_) / std::max(now - started, 1e-3),
                   render::frameTimePercentiles(frameMilliseconds).text().c_str());
       std::printf("frame parts: %s\n", parts.partsText(played_.simulation->probeFrames()).c_str());
+      if (const std::string passes = parts.pictureText(); !passes.empty())
+        std::printf("%s\n", passes.c_str());
       reportPictureScales();
       break;
     }

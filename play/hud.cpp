@@ -126,11 +126,15 @@ std::vector<render::HudRect> hudRects(const sim::Simulation& simulation) {
   for (size_t row = 0; row < shown.size(); ++row) {
     const size_t i = shown[row];
     bar(kExposureBarLeft, int(row), readings ? readings->exposure[i] : 0.0f, HudColour::Orange);
-    // Where the reading starts to count: a lit sensor at or above it, a watcher above it.
-    const float y0 = kBarTop - kBarGap * float(row),
+    // Where the reading starts to count (a lit sensor at or above it, a watcher above it): a
+    // tick above the bar and one below, so the mark never crosses the label written on the bar.
+    const float y0 = kBarTop - kBarGap * float(row), y1 = y0 + kBarHeight,
                 x = kExposureBarLeft + kBarWidth * meters[i].threshold;
+    constexpr float kTickHalfWidth = 0.002f, kTickLength = 0.008f;
     rects.push_back(
-        {x - 0.002f, y0 - 0.006f, x + 0.002f, y0 + kBarHeight + 0.006f, HudColour::White});
+        {x - kTickHalfWidth, y0 - kTickLength, x + kTickHalfWidth, y0, HudColour::White});
+    rects.push_back(
+        {x - kTickHalfWidth, y1, x + kTickHalfWidth, y1 + kTickLength, HudColour::White});
   }
   // The crosshair: what is picked and what the focus region is centred on.
   constexpr float kArm = 0.012f, kThickness = 0.0015f;

@@ -614,7 +614,9 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   if (denoiser_)
     denoiser_->createPipelines(compiler, pipelineLayout_, options_.neighbourhoodReads,
                                greyVisibility);
-  if (upscaler_) upscaler_->createPipeline(compiler, pipelineLayout_, features.mirrors);
+  if (upscaler_)
+    upscaler_->createPipeline(compiler, pipelineLayout_, features.mirrors,
+                              options_.heldPointResolve);
 }
 
 void Renderer::setInstanceTransforms(std::span<const glm::mat4> objectToWorld) {

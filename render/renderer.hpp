@@ -60,6 +60,11 @@ struct RendererOptions {
   // (shared_types.h); false: one frame's worth into a history of DENOISER_MAX_HISTORY, as in
   // any other view. Needs stillViewDenoiser.
   bool steadyPenumbraSamples = true;
+  // Under a camera held still, the upscaler's resolve takes a pixel whose four samples show
+  // nothing that moved as held where it was, without reading their motions (on levels whose
+  // movers never rest, most of the picture). The pictures are the same as the general path's;
+  // false takes the general path everywhere (to compare).
+  bool heldPointResolve = true;
   // Shadow rays per pixel and frame towards the soft lights (1..16; CPU drivers: 1).
   uint32_t softShadowSamples = 1;
   // Route light by flat mirrors onto surfaces and sensors where the scene can (false: direct

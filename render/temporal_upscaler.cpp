@@ -29,9 +29,12 @@ float radicalInverse(uint32_t index, uint32_t base) {
 
 // The resolve for any view, or for a steady one (STEADY_VIEW: each pixel's history where it is,
 // unclamped), of a scene with mirrors or without (HAS_MIRRORS: a reflection's motion inside a
-// mirror, the mirror's along its outline); shaders/temporal_upscale.glsl.
-ShaderDefines resolveDefines(bool steadyView, bool mirrors) {
-  return {{"STEADY_VIEW", steadyView ? "1" : "0"}, {"HAS_MIRRORS", mirrors ? "1" : "0"}};
+// mirror, the mirror's along its outline), taking a pixel around which nothing moved under a
+// camera held still as held or not (HELD_POINT_RESOLVE); shaders/temporal_upscale.glsl.
+ShaderDefines resolveDefines(bool steadyView, bool mirrors, bool heldPoints) {
+  return {{"STEADY_VIEW", steadyView ? "1" : "0"},
+          {"HAS_MIRRORS", mirrors ? "1" : "0"},
+          {"HELD_POINT_RESOLVE", heldPoints ? "1" : "0"}};
 }
 const char* resolveName(bool steadyView) {
   return steadyView ? "temporal upscale, steady view" : "temporal upscale";
@@ -147,9 +150,9 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
 }
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
-                                      bool mirrors) {
+                                      bool mirrors, bool heldPoints) {
   for (const bool steadyView : {false, true}) {
-    const ShaderDefines defines = resolveDefines(steadyView, mirrors);
+    const ShaderDefines defines = resolveDefines(steadyView, mirrors, heldPoints);
     resolves_[steadyView] =
         attachments_
             ? createFullscreenPipeline(context_, compiler, layout, renderPass_, kResolveAttachments,

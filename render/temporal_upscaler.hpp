@@ -38,7 +38,10 @@ class TemporalUpscaler {
   // Storage images by binding for frame parity 0 or 1 ("previous" bindings get the other's).
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   // `mirrors`: the scene has mirrors, whose reflections ray-gen gives a motion of their own.
-  void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout, bool mirrors);
+  // `heldPoints`: under a camera held still, a pixel around which nothing moved reads no motion
+  // (RendererOptions::heldPointResolve).
+  void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout, bool mirrors,
+                      bool heldPoints);
   // The resolve into frame parity `parity`'s history, ordered after this frame's tonemap and
   // ray-gen and after the earlier frames' reads of what it overwrites. A steady view (the scene
   // held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames) takes the pipeline compiled for it, which

@@ -57,6 +57,12 @@ const float kStillRangeMargin = 0.25;
 #ifndef HAS_MIRRORS
 #define HAS_MIRRORS 0
 #endif
+// HELD_POINT_RESOLVE 1: under a camera held still, a pixel whose four samples show nothing that
+// moved takes heldPointHistory (the same history as the general path's, for less); 0: the
+// general path everywhere (RendererOptions::heldPointResolve, to compare).
+#ifndef HELD_POINT_RESOLVE
+#define HELD_POINT_RESOLVE 1
+#endif
 
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
 // smooth bump about a pixel wide, like the box filter of a supersampled reference.
@@ -151,6 +157,28 @@ vec4 historyColourAndWeight(uvec4 texel) {
 float sampleWeight(vec2 offset) {
   float t = max(1.0 - dot(offset, offset) / (kSampleRadius * kSampleRadius), 0.0);
   return t * t;
+}
+
+// The range of the 3x3 samples around a point that did not move, widened by kStillRangeMargin
+// of its width on each side: `low` and `high` hold the four samples around the pixel (`base` the
+// top-left one's render pixel, `nearest` the one nearest the pixel) and get the other five. The
+// 3x3 is centred on the nearest of the four, so its other five lie in the column and the row
+// just past the four on the nearest one's side. (Loaded by position: a loop over the nine that
+// skipped the four cost lavapipe more than the loads themselves.)
+void widenToStillRange(vec2 base, ivec2 nearest, inout vec3 low, inout vec3 high) {
+  ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
+  ivec2 beyond = ivec2(base) + mix(ivec2(-1), ivec2(2), greaterThan(nearest, ivec2(base)));
+  ivec2 first = ivec2(base), second = ivec2(base) + 1;
+  ivec2 extra[5] = ivec2[5](ivec2(beyond.x, first.y), ivec2(beyond.x, second.y),
+                            ivec2(first.x, beyond.y), ivec2(second.x, beyond.y), beyond);
+  for (int i = 0; i < 5; ++i) {
+    vec3 colour = imageLoad(currentImage, clamp(extra[i], ivec2(0), renderSize - 1)).rgb;
+    low = min(low, colour);
+    high = max(high, colour);
+  }
+  vec3 spread = high - low;
+  low -= kStillRangeMargin * spread;
+  high += kStillRangeMargin * spread;
 }
 
 // The history at where this pixel's point was in the previous frame, clamped to the range of
@@ -279,24 +307,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   vec2 previous = vec2(pixel) + round(displacement / scale * kMotionGrid) / kMotionGrid;
   // What the pixel shows moves: the camera does, or the instance the pixel shows.
   bool pointMoves = !cameraStill || instanceMoved(seenInstance);
-  if (!pointMoves) {
-    // The four samples around the pixel are in the range already. The 3x3 is centred on the
-    // nearest of them, so its other five lie in the column and the row just past the four on
-    // the nearest one's side. (Loaded by position: a loop over the nine that skipped the four
-    // cost lavapipe more than the loads themselves.)
-    ivec2 beyond = ivec2(base) + mix(ivec2(-1), ivec2(2), greaterThan(nearest, ivec2(base)));
-    ivec2 first = ivec2(base), second = ivec2(base) + 1;
-    ivec2 extra[5] = ivec2[5](ivec2(beyond.x, first.y), ivec2(beyond.x, second.y),
-                              ivec2(first.x, beyond.y), ivec2(second.x, beyond.y), beyond);
-    for (int i = 0; i < 5; ++i) {
-      vec3 colour = imageLoad(currentImage, clamp(extra[i], ivec2(0), renderSize - 1)).rgb;
-      low = min(low, colour);
-      high = max(high, colour);
-    }
-    vec3 spread = high - low;
-    low -= kStillRangeMargin * spread;
-    high += kStillRangeMargin * spread;
-  }
+  if (!pointMoves) widenToStillRange(base, nearest, low, high);
   vec3 history = vec3(0.0);
   float historyWeight = 0.0;
   ivec2 previousPixel = ivec2(floor(previous + 0.5));
@@ -341,6 +352,40 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   return vec4(history, historyWeight);
 }
 
+#if !STEADY_VIEW && HELD_POINT_RESOLVE
+// reprojectedHistory for a pixel whose four samples show nothing that moved (the tonemap's
+// alpha, from ray-gen) under a camera held still, after the first frame: every motion there is
+// 0, so the point is where it was, its history is the pixel under it, clamped to the still range
+// as a point that did not move is, and the instance it shows is the one its history shows (a
+// steady view's rule). The same history without reading the four motions and the instances they
+// name: with the camera held still on a level whose movers never rest (06's lamp, 07's carts)
+// every pixel took the general path (docs/PERFORMANCE.md, session 36). Where the history showed
+// something that moved, the mover uncovered the pixel: the history is dropped, and the instance
+// shown is found as reprojectedHistory finds it, from the motions (of the sample nearest in
+// depth, a mirror's as the mirror).
+vec4 heldPointHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, vec3 high,
+                      out uint seenInstance) {
+  ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
+  vec2 fraction = samplePosition - base;
+  int nearestCorner = int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
+  ivec2 nearest = cornerSample(base, nearestCorner, renderSize);
+  uvec4 texel = imageLoad(historyImage, pixel);
+  if (instanceMoved(texel.z)) {
+    vec4 chosen = imageLoad(motionImage, nearest);
+    for (int corner = 0; corner < 4; ++corner) {
+      vec4 candidate = imageLoad(motionImage, cornerSample(base, corner, renderSize));
+      if (candidate.z > 0.0 && (chosen.z <= 0.0 || candidate.z < chosen.z)) chosen = candidate;
+    }
+    seenInstance = uint(abs(chosen.w));
+    return vec4(0.0);
+  }
+  seenInstance = texel.z;
+  widenToStillRange(base, nearest, low, high);
+  vec4 history = historyColourAndWeight(texel);
+  return vec4(clamp(history.rgb, low, high), history.a);
+}
+#endif
+
 // The pixel's picture (rgba8, sRGB-encoded) and its history for the next frame (as above).
 void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   ivec2 outputSize = ivec2(frame.upscale.zw);
@@ -357,9 +402,12 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   vec3 corners[4];
   vec3 low = vec3(1.0), high = vec3(0.0), weighted = vec3(0.0);
   float weight = 0.0;
+  float shownHeld = 1.0;  // 0 where one of the four shows something that moved (ray-gen's alpha)
   for (int corner = 0; corner < 4; ++corner) {
     ivec2 offset = ivec2(corner & 1, corner >> 1);
-    vec3 colour = imageLoad(currentImage, cornerSample(base, corner, renderSize)).rgb;
+    vec4 texel = imageLoad(currentImage, cornerSample(base, corner, renderSize));
+    vec3 colour = texel.rgb;
+    shownHeld = min(shownHeld, texel.a);
     corners[corner] = colour;
     low = min(low, colour);
     high = max(high, colour);
@@ -377,7 +425,14 @@ void resolvePixel(ivec2 pixel, out vec4 display, out uvec4 historyNext) {
   uint seenInstance = texel.z;
 #else
   uint seenInstance;
+#if HELD_POINT_RESOLVE
+  vec4 history =
+      cameraHeldStill() && frame.denoise.x == 0u && shownHeld > 0.5
+          ? heldPointHistory(pixel, samplePosition, base, low, high, seenInstance)
+          : reprojectedHistory(pixel, samplePosition, base, low, high, seenInstance);
+#else
   vec4 history = reprojectedHistory(pixel, samplePosition, base, low, high, seenInstance);
+#endif
 #endif
   float historyWeight = history.a;
   // The cap on the history's weight: UPSCALE_MAX_HISTORY_FRAMES times the bump's integral

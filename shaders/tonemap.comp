@@ -50,7 +50,8 @@ vec3 visibilityAtRay(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.sizeFrameLights.x) || pixel.y >= int(frame.sizeFrameLights.y)) return;
-  vec3 radiance = imageLoad(hdrImage, pixel).rgb;
+  vec4 traced = imageLoad(hdrImage, pixel);
+  vec3 radiance = traced.rgb;
 #if SOFT_SHADOWS
   radiance += imageLoad(softLightImage, pixel).rgb * visibilityAtRay(pixel);
 #endif
@@ -62,5 +63,7 @@ void main() {
                                                                 : clamp(radiance, 0.0, 1.0);
   // Quantize here with round-to-nearest so the UNORM store is exact on every driver.
   vec3 encoded = round(clamp(linearToSrgb(display), 0.0, 1.0) * 255.0) / 255.0;
-  imageStore(outputImage, pixel, vec4(encoded, 1.0));
+  // Alpha: ray-gen's (1 unless temporal upscaling, whose resolve reads 0 as "shows something
+  // that moved").
+  imageStore(outputImage, pixel, vec4(encoded, traced.a));
 }

@@ -234,7 +234,7 @@ const std::vector<uint8_t>& Simulation::renderPicture(bool readback) {
   frame.camera = world_.camera();
   // Sample sequences of their own, so taking a picture changes no probe frame's samples.
   frame.frameIndex = kPictureFrames + pictureFrames_++;
-  renderer_->renderFrame(frame, readback);
+  lastPictureStats_ = renderer_->renderFrame(frame, readback);
   return renderer_->pixels();
 }
 

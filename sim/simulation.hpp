@@ -73,6 +73,8 @@ class Simulation {
   // unaffected. Returns RGBA8 rows top to bottom, read back unless `readback` is false (a
   // window presents the renderer's image instead).
   const std::vector<uint8_t>& renderPicture(bool readback = true);
+  // The last picture's times: each pass's on the GPU and the host's from submit to fence.
+  const render::FrameStats& lastPictureStats() const { return lastPictureStats_; }
   render::Renderer& renderer() { return *renderer_; }
   const render::Renderer& renderer() const { return *renderer_; }
 
@@ -103,6 +105,7 @@ class Simulation {
   uint64_t probeFrames_ = 0;
   uint32_t frameIndex_ = 0;  // probe frames' sample sequence index
   uint32_t pictureFrames_ = 0;
+  render::FrameStats lastPictureStats_;
 };
 
 }  // namespace sim
