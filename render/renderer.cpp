@@ -933,6 +933,7 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
     const bool steady =
         viewHeld && !sceneChanged_ && uniforms.exposureTonemap == previous.exposureTonemap;
     steadyFrames_ = steady ? steadyFrames_ + 1 : 0;
+    viewHeld_ = viewHeld;
     const bool changed = sceneChanged_;
     sceneChanged_ = false;
     // Still (for the denoiser): no instance moved; lights may have changed.
@@ -1028,7 +1029,9 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
     vkCmdDispatch(commands, (pictureWidth_ + 7) / 8, (pictureHeight_ + 7) / 8, 1);
     if (upscaler_)
       upscaler_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_,
-                        steadyFrames_ >= UPSCALE_STEADY_FRAMES_UNCLAMPED);
+                        steadyFrames_ >= UPSCALE_STEADY_FRAMES_UNCLAMPED ? ResolveView::Steady
+                        : viewHeld_                                      ? ResolveView::HeldCamera
+                                                                         : ResolveView::Moving);
   }
   stamp(3);
   const VkImage picture = outputImage();

@@ -291,6 +291,9 @@ class Renderer {
   // The last full frame's camera, picture size and instances were the full frame's before it
   // (and it was neither a reset nor a reference accumulation): the denoiser's still view.
   bool stillView_ = false;
+  // The last full frame's camera and picture size were the full frame's before it, and it was no
+  // reset: the upscaler's resolve takes its pipeline for a camera held still.
+  bool viewHeld_ = false;
   VkPipelineLayout pipelineLayout_ = VK_NULL_HANDLE;
   std::unique_ptr<RayTracingPipeline> rayTracingPipeline_;
   VkPipeline tonemapPipeline_ = VK_NULL_HANDLE;

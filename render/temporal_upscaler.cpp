@@ -27,17 +27,26 @@ float radicalInverse(uint32_t index, uint32_t base) {
   return result;
 }
 
-// The resolve for any view, or for a steady one (STEADY_VIEW: each pixel's history where it is,
-// unclamped), of a scene with mirrors or without (HAS_MIRRORS: a reflection's motion inside a
-// mirror, the mirror's along its outline), taking a pixel around which nothing moved under a
-// camera held still as held or not (HELD_POINT_RESOLVE); shaders/temporal_upscale.glsl.
-ShaderDefines resolveDefines(bool steadyView, bool mirrors, bool heldPoints) {
-  return {{"STEADY_VIEW", steadyView ? "1" : "0"},
+// The resolve for `view`: a moving one, a camera held still (HELD_POINT_RESOLVE: a pixel around
+// which nothing moved takes the history under it; the moving view's pipeline where `heldPoints`
+// is false), or a steady one (STEADY_VIEW: each pixel's history where it is, unclamped), of a
+// scene with mirrors or without (HAS_MIRRORS: a reflection's motion inside a mirror, the
+// mirror's along its outline); shaders/temporal_upscale.glsl.
+ShaderDefines resolveDefines(ResolveView view, bool mirrors) {
+  return {{"STEADY_VIEW", view == ResolveView::Steady ? "1" : "0"},
           {"HAS_MIRRORS", mirrors ? "1" : "0"},
-          {"HELD_POINT_RESOLVE", heldPoints ? "1" : "0"}};
+          {"HELD_POINT_RESOLVE", view == ResolveView::HeldCamera ? "1" : "0"}};
 }
-const char* resolveName(bool steadyView) {
-  return steadyView ? "temporal upscale, steady view" : "temporal upscale";
+const char* resolveName(ResolveView view) {
+  switch (view) {
+    case ResolveView::Moving:
+      return "temporal upscale";
+    case ResolveView::HeldCamera:
+      return "temporal upscale, camera held";
+    case ResolveView::Steady:
+      return "temporal upscale, steady view";
+  }
+  return "temporal upscale";
 }
 
 }  // namespace
@@ -151,15 +160,18 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,
                                       bool mirrors, bool heldPoints) {
-  for (const bool steadyView : {false, true}) {
-    const ShaderDefines defines = resolveDefines(steadyView, mirrors, heldPoints);
-    resolves_[steadyView] =
+  for (const ResolveView view :
+       {ResolveView::Moving, ResolveView::HeldCamera, ResolveView::Steady}) {
+    VkPipeline& resolve = resolves_[size_t(view)];
+    if (view == ResolveView::HeldCamera && !heldPoints) continue;  // the moving view's, below
+    const ShaderDefines defines = resolveDefines(view, mirrors);
+    resolve =
         attachments_
             ? createFullscreenPipeline(context_, compiler, layout, renderPass_, kResolveAttachments,
-                                       "temporal_upscale.frag", defines, resolveName(steadyView))
+                                       "temporal_upscale.frag", defines, resolveName(view))
             : createComputePipeline(context_, layout,
                                     compiler.compile("temporal_upscale.comp", defines).spirv,
-                                    resolveName(steadyView));
+                                    resolveName(view));
   }
 }
 
@@ -173,8 +185,11 @@ VkAccessFlags TemporalUpscaler::pictureAccess() const {
 }
 
 void TemporalUpscaler::record(VkCommandBuffer commands, VkPipelineLayout layout,
-                              VkDescriptorSet set, uint32_t parity, bool steadyView) const {
-  const VkPipeline resolve = resolves_[steadyView];
+                              VkDescriptorSet set, uint32_t parity, ResolveView view) const {
+  const VkPipeline held = resolves_[size_t(ResolveView::HeldCamera)];
+  const VkPipeline resolve = view == ResolveView::HeldCamera && !held
+                                 ? resolves_[size_t(ResolveView::Moving)]
+                                 : resolves_[size_t(view)];
   if (!attachments_) {
     // The tonemap's picture before the resolve reads it; the earlier frames' accesses of its
     // images are ordered by the renderer's barrier at the frame's start.

@@ -23,6 +23,17 @@ class Context;
 // image stores on GPUs (the H100's few raster units made the fragment pass 26 times slower).
 enum class ResolveWrites { Auto, Attachments, ImageStores };
 
+// Which of the resolve's pipelines a frame takes: each reads only what its kind of view needs
+// (shaders/temporal_upscale.glsl).
+enum class ResolveView {
+  Moving,      // the camera moved: every pixel's history reprojected by its samples' motion
+  HeldCamera,  // the camera held still and something moved: a pixel around which nothing moved
+               // reads no motion (HELD_POINT_RESOLVE)
+  Steady,      // the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames: each pixel's
+               // history where it is, unclamped (STEADY_VIEW)
+};
+inline constexpr std::size_t kResolveViews = 3;
+
 class TemporalUpscaler {
  public:
   TemporalUpscaler(const Context& context, uint32_t renderWidth, uint32_t renderHeight,
@@ -39,15 +50,14 @@ class TemporalUpscaler {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   // `mirrors`: the scene has mirrors, whose reflections ray-gen gives a motion of their own.
   // `heldPoints`: under a camera held still, a pixel around which nothing moved reads no motion
-  // (RendererOptions::heldPointResolve).
+  // (RendererOptions::heldPointResolve), in a pipeline of its own.
   void createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout, bool mirrors,
                       bool heldPoints);
   // The resolve into frame parity `parity`'s history, ordered after this frame's tonemap and
-  // ray-gen and after the earlier frames' reads of what it overwrites. A steady view (the scene
-  // held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames) takes the pipeline compiled for it, which
-  // reads each pixel's history where it is, unclamped.
+  // ray-gen and after the earlier frames' reads of what it overwrites, with the pipeline
+  // compiled for `view`.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t parity, bool steadyView) const;
+              uint32_t parity, ResolveView view) const;
   // The stage and access that write the picture, for what reads it next.
   VkPipelineStageFlags pictureStage() const;
   VkAccessFlags pictureAccess() const;
@@ -68,8 +78,8 @@ class TemporalUpscaler {
   std::unique_ptr<StorageImage> motion_, display_;
   std::array<std::unique_ptr<StorageImage>, 2> history_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
-  std::array<VkFramebuffer, 2> framebuffers_{};  // by the parity of the history written
-  std::array<VkPipeline, 2> resolves_{};         // [0] any view, [1] a steady view (STEADY_VIEW)
+  std::array<VkFramebuffer, 2> framebuffers_{};       // by the parity of the history written
+  std::array<VkPipeline, kResolveViews> resolves_{};  // by ResolveView
 };
 
 }  // namespace render

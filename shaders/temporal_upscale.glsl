@@ -57,11 +57,13 @@ const float kStillRangeMargin = 0.25;
 #ifndef HAS_MIRRORS
 #define HAS_MIRRORS 0
 #endif
-// HELD_POINT_RESOLVE 1: under a camera held still, a pixel whose four samples show nothing that
-// moved takes heldPointHistory (the same history as the general path's, for less); 0: the
-// general path everywhere (RendererOptions::heldPointResolve, to compare).
+// HELD_POINT_RESOLVE 1: the pipeline for a camera held still (render::ResolveView::HeldCamera),
+// where a pixel whose four samples show nothing that moved takes heldPointHistory (the same
+// history as the general path's, for less). A pipeline of its own: the test in the moving
+// view's pipeline cost a strafing view's resolve 0.6 ms on 01 at 640x360 (docs/PERFORMANCE.md,
+// session 36).
 #ifndef HELD_POINT_RESOLVE
-#define HELD_POINT_RESOLVE 1
+#define HELD_POINT_RESOLVE 0
 #endif
 
 // A sample counts for an output pixel by its distance d (output pixels) as (1 - d^2/r^2)^2, a
