@@ -28,10 +28,10 @@ float radicalInverse(uint32_t index, uint32_t base) {
 }
 
 // The resolve for `view`: a moving one, a camera held still (HELD_POINT_RESOLVE: a pixel around
-// which nothing moved takes the history under it; the moving view's pipeline where `heldPoints`
-// is false), or a steady one (STEADY_VIEW: each pixel's history where it is, unclamped), of a
-// scene with mirrors or without (HAS_MIRRORS: a reflection's motion inside a mirror, the
-// mirror's along its outline); shaders/temporal_upscale.glsl.
+// which nothing moved takes the history under it), or a steady one (STEADY_VIEW: each pixel's
+// history where it is, unclamped), of a scene with mirrors or without (HAS_MIRRORS: a
+// reflection's motion inside a mirror, the mirror's along its outline);
+// shaders/temporal_upscale.glsl.
 ShaderDefines resolveDefines(ResolveView view, bool mirrors) {
   return {{"STEADY_VIEW", view == ResolveView::Steady ? "1" : "0"},
           {"HAS_MIRRORS", mirrors ? "1" : "0"},
@@ -163,7 +163,8 @@ void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout
   for (const ResolveView view :
        {ResolveView::Moving, ResolveView::HeldCamera, ResolveView::Steady}) {
     VkPipeline& resolve = resolves_[size_t(view)];
-    if (view == ResolveView::HeldCamera && !heldPoints) continue;  // the moving view's, below
+    // Without held points a held camera takes the moving view's pipeline (record()).
+    if (view == ResolveView::HeldCamera && !heldPoints) continue;
     const ShaderDefines defines = resolveDefines(view, mirrors);
     resolve =
         attachments_
