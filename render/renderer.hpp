@@ -144,7 +144,8 @@ class Renderer {
   VkImage outputImage() const;
   VkImageView outputView() const;  // of outputImage(), which can also be sampled
   // The last frame's linear radiance before exposure and tonemap, without the soft lights'
-  // share (test and debugging hook; waits).
+  // share, in rgb; alpha 0 where temporal upscaling's sample shows something that moved, else 1
+  // (test and debugging hook; waits).
   std::vector<glm::vec4> readRadiance() const;
   // Soft-shadow denoiser images of the last frame (test and debugging hook; waits).
   std::vector<glm::vec4> readDenoiser(DenoiserImage which) const;

@@ -26,9 +26,11 @@ enum class ResolveWrites { Auto, Attachments, ImageStores };
 // Which of the resolve's pipelines a frame takes: each reads only what its kind of view needs
 // (shaders/temporal_upscale.glsl).
 enum class ResolveView {
-  Moving,      // the camera moved: every pixel's history reprojected by its samples' motion
-  HeldCamera,  // the camera held still and something moved: a pixel around which nothing moved
-               // reads no motion (HELD_POINT_RESOLVE)
+  Moving,      // the camera or the picture size changed, or the history starts afresh: every
+               // pixel's history reprojected by its samples' motion
+  HeldCamera,  // the camera and picture size held, the scene not steady (something moves, or
+               // has not held long enough): a pixel around which nothing moved reads no motion
+               // (HELD_POINT_RESOLVE)
   Steady,      // the scene held UPSCALE_STEADY_FRAMES_UNCLAMPED full frames: each pixel's
                // history where it is, unclamped (STEADY_VIEW)
 };
