@@ -1,5 +1,6 @@
 #include "render/temporal_upscaler.hpp"
 
+#include <array>
 #include <stdexcept>
 #include <string>
 
@@ -37,17 +38,9 @@ ShaderDefines resolveDefines(ResolveView view, bool mirrors) {
           {"HAS_MIRRORS", mirrors ? "1" : "0"},
           {"HELD_POINT_RESOLVE", view == ResolveView::HeldCamera ? "1" : "0"}};
 }
-const char* resolveName(ResolveView view) {
-  switch (view) {
-    case ResolveView::Moving:
-      return "temporal upscale";
-    case ResolveView::HeldCamera:
-      return "temporal upscale, camera held";
-    case ResolveView::Steady:
-      return "temporal upscale, steady view";
-  }
-  return "temporal upscale";
-}
+// Each resolve pipeline's name, by ResolveView.
+constexpr std::array<const char*, kResolveViews> kResolveNames = {
+    "temporal upscale", "temporal upscale, camera held", "temporal upscale, steady view"};
 
 }  // namespace
 
@@ -166,13 +159,13 @@ void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout
     // Without held points a held camera takes the moving view's pipeline (record()).
     if (view == ResolveView::HeldCamera && !heldPoints) continue;
     const ShaderDefines defines = resolveDefines(view, mirrors);
-    resolve =
-        attachments_
-            ? createFullscreenPipeline(context_, compiler, layout, renderPass_, kResolveAttachments,
-                                       "temporal_upscale.frag", defines, resolveName(view))
-            : createComputePipeline(context_, layout,
-                                    compiler.compile("temporal_upscale.comp", defines).spirv,
-                                    resolveName(view));
+    resolve = attachments_
+                  ? createFullscreenPipeline(context_, compiler, layout, renderPass_,
+                                             kResolveAttachments, "temporal_upscale.frag", defines,
+                                             kResolveNames[size_t(view)])
+                  : createComputePipeline(context_, layout,
+                                          compiler.compile("temporal_upscale.comp", defines).spirv,
+                                          kResolveNames[size_t(view)]);
   }
 }
 

@@ -124,6 +124,18 @@ ivec2 cornerSample(vec2 base, int corner, ivec2 renderSize) {
   return clamp(ivec2(base) + ivec2(corner & 1, corner >> 1), ivec2(0), renderSize - 1);
 }
 
+// Which of the four samples around a point (0-3: x, then y) is nearest it, `fraction` (0-1 in x
+// and y) its place past the first.
+int nearestCornerTo(vec2 fraction) {
+  return int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
+}
+
+// Whether a sample at `candidate` from the previous camera is nearer in depth than one at
+// `chosen` (0 or below: in front of no camera, never nearer, and beaten by any that is).
+bool nearerInDepth(float candidate, float chosen) {
+  return candidate > 0.0 && (chosen <= 0.0 || candidate < chosen);
+}
+
 // The motion ray-gen wrote for the sample at render pixel `at`, xy made how far its point moved
 // (render pixels; the sample lies at `at` + `jitter`).
 vec4 sampleMotion(ivec2 at, vec2 jitter) {
@@ -198,7 +210,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
   // Along a silhouette the foreground's motion so carries the pixels around its edge, which moves
   // as one piece instead of splitting into the samples' 4-pixel steps.
   vec2 fraction = samplePosition - base;
-  int nearestCorner = int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
+  int nearestCorner = nearestCornerTo(fraction);
   ivec2 nearest = cornerSample(base, nearestCorner, renderSize);
   // Each sample's motion, xy made how far its point moved (render pixels).
   vec4 cornerMotions[4];
@@ -219,7 +231,7 @@ vec4 reprojectedHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, v
 #if HAS_MIRRORS
     oneSurface = oneSurface && candidate.w == nearestShows;
 #endif
-    if (candidate.z > 0.0 && (motion.z <= 0.0 || candidate.z < motion.z)) {
+    if (nearerInDepth(candidate.z, motion.z)) {
       motion = candidate;
       chosenCorner = corner;
     }
@@ -371,14 +383,13 @@ vec4 heldPointHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, vec
                       out uint seenInstance) {
   ivec2 renderSize = ivec2(frame.sizeFrameLights.xy);
   vec2 fraction = samplePosition - base;
-  int nearestCorner = int(fraction.x >= 0.5) + 2 * int(fraction.y >= 0.5);
-  ivec2 nearest = cornerSample(base, nearestCorner, renderSize);
+  ivec2 nearest = cornerSample(base, nearestCornerTo(fraction), renderSize);
   uvec4 texel = imageLoad(historyImage, pixel);
   if (instanceMoved(texel.z)) {
     vec2 chosen = imageLoad(motionImage, nearest).zw;  // depth and instance
     for (int corner = 0; corner < 4; ++corner) {
       vec2 candidate = imageLoad(motionImage, cornerSample(base, corner, renderSize)).zw;
-      if (candidate.x > 0.0 && (chosen.x <= 0.0 || candidate.x < chosen.x)) chosen = candidate;
+      if (nearerInDepth(candidate.x, chosen.x)) chosen = candidate;
     }
     seenInstance = uint(abs(chosen.y));
     return vec4(0.0);
