@@ -178,6 +178,64 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
   imageStore(historyNextImage, pixel, vec4(current, 1.0));
 }
 
+#if !STILL_VIEW
+// A moving view's history may be resampled with Catmull-Rom weights over 4x4 taps (where every
+// tap shows the pixel's surface) instead of bilinear ones over 2x2. The cubic follows a ramp's
+// curvature, so a penumbra's profile survives many resamplings, where each bilinear one blurs it
+// by f(1 - f) squared pixels; but it averages less of the history's noise away. So it is used
+// where 32 frames of the bilinear blur would take more than a quarter of what the cap allows
+// (SHARP_BELOW): a penumbra a few pixels wide, or a sharp edge. Under a penumbra wider than two
+// pixels what it still blurs (a ramp's finer detail) counts as a quarter of the bilinear blur,
+// which lets the history grow four times as long; under a narrower one the cap stays, with less
+// blur within it. Moving after 32 frames at 320x180: 02 Penumbra 0.01029 -> 0.00945, 06 Night
+// Watch 0.00642 -> 0.00502. Used wherever the view moved, it did as well at 320x180 but worse
+// under 1920x1080's penumbrae tens of pixels wide (02 0.00486 -> 0.00625, 06 0.00381 ->
+// 0.00484), which the bilinear blur barely touches while it smooths their noise
+// (docs/QUALITY.md, session 37).
+const float SHARP_BLUR_FRACTION = 0.25;
+const float SHARP_BELOW = 4.0;
+const float SHARP_TAPS_WEIGHT = 0.999;  // every bilinear tap kept (weights sum to 1)
+
+// The weights of the taps at -1, 0, 1 and 2 for a point at `t` in [0, 1) past tap 0.
+vec4 catmullRomWeights(float t) {
+  float t2 = t * t, t3 = t2 * t;
+  return vec4(-0.5 * t3 + t2 - 0.5 * t, 1.5 * t3 - 2.5 * t2 + 1.0, -1.5 * t3 + 2.0 * t2 + 0.5 * t,
+              0.5 * t3 - 0.5 * t2);
+}
+
+// The history at `base` + `f` with Catmull-Rom weights; false (and `history` untouched) where a
+// tap of non-zero weight lies outside the previous picture, shows another surface or is not
+// finite. The bilinear taps (base and the three past it) showed the surface already; a weight
+// that is 0 there (f 0 on an axis) is 0 here too. The result is clamped to [0, 1], which the
+// weights' negative lobes can overshoot.
+bool sharpHistory(ivec2 base, vec2 f, uint instance, float expectedDistance, vec3 normal,
+                  inout vec3 history) {
+  vec4 weightsX = catmullRomWeights(f.x), weightsY = catmullRomWeights(f.y);
+  vec3 sum = vec3(0.0);
+  for (int j = 0; j < 4; ++j) {
+    if (weightsY[j] == 0.0) continue;
+    for (int i = 0; i < 4; ++i) {
+      float weight = weightsX[i] * weightsY[j];
+      if (weight == 0.0) continue;
+      ivec2 tap = base + ivec2(i - 1, j - 1);
+      bool bilinearTap = (i == 1 || i == 2) && (j == 1 || j == 2);
+      if (!bilinearTap) {
+        if (!insidePreviousImage(tap)) return false;
+        uvec4 previousSurface = imageLoad(surfacePreviousImage, tap);
+        if (previousSurface.z != instance ||
+            !historyMatches(previousSurface.xy, expectedDistance, normal))
+          return false;
+      }
+      vec3 tapHistory = imageLoad(historyImage, tap).rgb;
+      if (!isFinite(tapHistory)) return false;
+      sum += weight * tapHistory;
+    }
+  }
+  history = clamp(sum, 0.0, 1.0);
+  return true;
+}
+#endif
+
 // Integrates this frame's sample `current` at `pixel`, whose surface and instance are
 // `packedSurface` (as surfaceImage holds them; never sky, which keepWithoutSurface takes), into
 // the history, and writes the spatial filter's input and the next history. Returns whether the
@@ -262,12 +320,20 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
       blur = spread.x + spread.y;
     }
     float blurAllowed = max(1.0, 0.25 * penumbra * penumbra);  // 1 where no width is known
-    historyCap = clamp(blurAllowed / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
     if (weightSum > 1e-3) {
       history = historySum / weightSum;
+      // Where the bilinear blur costs (above), every bilinear tap showed this surface and the
+      // history is neither fully lit nor fully shadowed (there any weights give the same),
+      // resample with Catmull-Rom weights instead.
+      if (blurAllowed < SHARP_BELOW * MAX_HISTORY_LENGTH * blur && weightSum > SHARP_TAPS_WEIGHT &&
+          any(greaterThan(history, vec3(0.0))) && any(lessThan(history, vec3(1.0))) &&
+          sharpHistory(base, f, instance, expectedDistance, surface.xyz, history)) {
+        if (blurAllowed > 1.0) blur *= SHARP_BLUR_FRACTION;
+      }
       moments = momentsSum.xy / weightSum;
       historyLength = momentsSum.z / weightSum;
     }
+    historyCap = clamp(blurAllowed / max(blur, 1e-6), MIN_MOVING_HISTORY, MAX_HISTORY_LENGTH);
 #endif
   }
   // Where ray-gen expected no history (a reset, or the motion it wrote says "nowhere") it

@@ -518,6 +518,7 @@ TEST_F(SoftShadowTest, denoised_error_keeps_falling_over_64_static_frames) {
 // pixel and the error does not grow (with 32 frames kept while moving it grew: 0.0376 after 16,
 // 0.0498 after 32, in plain RMSE). Plain RMSE changes with the view, though (0.0215 after 8,
 // 0.0235 after 16, 0.0270 after 24, 0.0241 after 32), so the test takes it over one raw sample's.
+// It asserts that nothing after the 8th frame rises more than 3 % above it.
 TEST_F(SoftShadowTest, a_strafing_views_error_holds_steady_from_8_to_32_frames) {
   // A small light well to the side: sharp shadow edges on the floor beside the slab. The view
   // strafes along the slab's side, so the floor it uncovers at the slab's edge is lit (the
@@ -525,13 +526,16 @@ TEST_F(SoftShadowTest, a_strafing_views_error_holds_steady_from_8_to_32_frames) 
   // the denoised error after 8, 16, 24 and 32 frames: 0.3107 0.3076 0.3110 0.3114 (a pixel's
   // first frames' samples gone by 32 frames, nothing grows). With the lattice's starts while
   // moving (sample_noise.glsl) 0.3007 0.3199 0.3270 0.2959: how the view's speed met the
-  // lattice changed from one view to the next.
+  // lattice changed from one view to the next. With the history resampled by Catmull-Rom
+  // weights (denoise_temporal.comp, sharpHistory) 0.2512 0.2560 0.2544 0.2327: the cap is the same
+  // under this narrow penumbra, the blur less.
   const std::vector<double> ratios =
       movingErrorOverRaw(slabScene(smallSideLight()), strafingCamera, {8, 16, 24, 32});
   std::printf("strafing: denoised over raw RMSE after 8, 16, 24, 32 frames: %.4f %.4f %.4f %.4f\n",
               ratios[0], ratios[1], ratios[2], ratios[3]);
-  const auto [lowest, highest] = std::minmax_element(ratios.begin(), ratios.end());
-  EXPECT_LE(*highest, 1.03 * *lowest);
+  const double highestLater = *std::max_element(ratios.begin() + 1, ratios.end());
+  EXPECT_LE(highestLater, 1.03 * ratios[0]);
+  EXPECT_LT(std::max(highestLater, ratios[0]), 0.28);  // resampled by bilinear weights: 0.31
 }
 
 TEST_F(SoftShadowTest, a_view_strafing_a_pixel_a_frame_averages_its_penumbra_over_the_light) {
@@ -586,8 +590,10 @@ TEST_F(SoftShadowTest, a_strafing_view_averages_longer_where_the_penumbra_is_wid
   // 1 / blur: a narrow penumbra keeps the pixel's cap, not less.
   EXPECT_GE(narrow.medianPenumbraHistory, 4.5f);
   // The longer average is the better one there: 0.01272 (0.01317 with the lattice's starts while
-  // moving, sample_noise.glsl) against 0.02027 with the pixel's cap.
-  EXPECT_LT(wide.error, 0.017);
+  // moving, sample_noise.glsl) against 0.02027 with the pixel's cap. Since the history is
+  // resampled by Catmull-Rom weights where 32 frames of the bilinear blur (about 7 px squared
+  // here) take more than a quarter of what the cap allows (9 px squared): 0.00967.
+  EXPECT_LT(wide.error, 0.011);
 }
 
 TEST_F(SoftShadowTest, raw_accumulation_error_falls_with_log_log_slope_of_at_most_minus_045) {
