@@ -184,7 +184,7 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
 // curvature, so a penumbra's profile survives many resamplings, where each bilinear one blurs it
 // by f(1 - f) squared pixels; but it averages less of the history's noise away. So it is used
 // where 32 frames of the bilinear blur would take more than a quarter of what the cap allows
-// (SHARP_BELOW): a penumbra a few pixels wide, or a sharp edge. Under a penumbra wider than two
+// (SHARP_BUDGET_SHARE): a penumbra a few pixels wide, or a sharp edge. Under a penumbra wider than two
 // pixels what it still blurs (a ramp's finer detail) counts as a quarter of the bilinear blur,
 // which lets the history grow four times as long; under a narrower one the cap stays, with less
 // blur within it. Moving after 32 frames at 320x180: 02 Penumbra 0.01029 -> 0.00945, 06 Night
@@ -192,8 +192,8 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
 // under 1920x1080's penumbrae tens of pixels wide (02 0.00486 -> 0.00625, 06 0.00381 ->
 // 0.00484), which the bilinear blur barely touches while it smooths their noise
 // (docs/QUALITY.md, session 37).
+const float SHARP_BUDGET_SHARE = 0.25;
 const float SHARP_BLUR_FRACTION = 0.25;
-const float SHARP_BELOW = 4.0;
 const float SHARP_TAPS_WEIGHT = 0.999;  // every bilinear tap kept (weights sum to 1)
 
 // The weights of the taps at -1, 0, 1 and 2 for a point at `t` in [0, 1) past tap 0.
@@ -325,7 +325,8 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
       // Where the bilinear blur costs (above), every bilinear tap showed this surface and the
       // history is neither fully lit nor fully shadowed (there any weights give the same),
       // resample with Catmull-Rom weights instead.
-      if (blurAllowed < SHARP_BELOW * MAX_HISTORY_LENGTH * blur && weightSum > SHARP_TAPS_WEIGHT &&
+      if (MAX_HISTORY_LENGTH * blur > SHARP_BUDGET_SHARE * blurAllowed &&
+          weightSum > SHARP_TAPS_WEIGHT &&
           any(greaterThan(history, vec3(0.0))) && any(lessThan(history, vec3(1.0))) &&
           sharpHistory(base, f, instance, expectedDistance, surface.xyz, history)) {
         if (blurAllowed > 1.0) blur *= SHARP_BLUR_FRACTION;
