@@ -194,7 +194,6 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
 // (docs/QUALITY.md, session 37).
 const float SHARP_BUDGET_SHARE = 0.25;
 const float SHARP_BLUR_FRACTION = 0.25;
-const float SHARP_TAPS_WEIGHT = 0.999;  // every bilinear tap kept (weights sum to 1)
 
 // The weights of the taps at -1, 0, 1 and 2 for a point at `t` in [0, 1) past tap 0.
 vec4 catmullRomWeights(float t) {
@@ -205,8 +204,8 @@ vec4 catmullRomWeights(float t) {
 
 // The history at `base` + `f` with Catmull-Rom weights; false (and `history` untouched) where a
 // tap of non-zero weight lies outside the previous picture, shows another surface or is not
-// finite. The bilinear taps (base and the three past it) showed the surface already; a weight
-// that is 0 there (f 0 on an axis) is 0 here too. The result is clamped to [0, 1], which the
+// finite. The caller kept every bilinear tap of non-zero weight (base and the three past it), so
+// they showed the surface already; a weight that is 0 there (f 0 on an axis) is 0 here too. The result is clamped to [0, 1], which the
 // weights' negative lobes can overshoot.
 bool sharpHistory(ivec2 base, vec2 f, uint instance, float expectedDistance, vec3 normal,
                   inout vec3 history) {
@@ -280,12 +279,14 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
     vec3 historySum = vec3(0.0);
     vec3 momentsSum = vec3(0.0);
     float weightSum = 0.0;
+    int weightedTaps = 0, keptTaps = 0;  // the taps of non-zero weight, and those kept
     for (int j = 0; j <= 1; ++j) {
       for (int i = 0; i <= 1; ++i) {
         ivec2 tap = base + ivec2(i, j);
-        if (!insidePreviousImage(tap)) continue;
         float weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
         if (weight <= 0.0) continue;
+        ++weightedTaps;
+        if (!insidePreviousImage(tap)) continue;
         // A tap of weight 1 is the nearest one, whose surface ray-gen has compared already
         // (chooseSoftSamples: the motion says "nowhere" where it did not match). A still view
         // has only such taps, and so reads no previous surface.
@@ -301,6 +302,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
         historySum += weight * tapHistory.rgb;
         momentsSum += weight * vec3(tapMoments, tapHistory.a);
         weightSum += weight;
+        ++keptTaps;
       }
     }
     // Each bilinear resampling blurs the history by a variance of f(1 - f) squared pixels per
@@ -326,7 +328,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
       // history is neither fully lit nor fully shadowed (there any weights give the same),
       // resample with Catmull-Rom weights instead.
       if (MAX_HISTORY_LENGTH * blur > SHARP_BUDGET_SHARE * blurAllowed &&
-          weightSum > SHARP_TAPS_WEIGHT &&
+          keptTaps == weightedTaps &&
           any(greaterThan(history, vec3(0.0))) && any(lessThan(history, vec3(1.0))) &&
           sharpHistory(base, f, instance, expectedDistance, surface.xyz, history)) {
         if (blurAllowed > 1.0) blur *= SHARP_BLUR_FRACTION;
