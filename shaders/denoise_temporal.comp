@@ -184,14 +184,14 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
 // curvature, so a penumbra's profile survives many resamplings, where each bilinear one blurs it
 // by f(1 - f) squared pixels; but it averages less of the history's noise away. So it is used
 // where 32 frames of the bilinear blur would take more than a quarter of what the cap allows
-// (SHARP_BUDGET_SHARE): a penumbra a few pixels wide, or a sharp edge. Under a penumbra wider than two
-// pixels what it still blurs (a ramp's finer detail) counts as a quarter of the bilinear blur,
-// which lets the history grow four times as long; under a narrower one the cap stays, with less
-// blur within it. Moving after 32 frames at 320x180: 02 Penumbra 0.01029 -> 0.00945, 06 Night
-// Watch 0.00642 -> 0.00502. Used wherever the view moved, it did as well at 320x180 but worse
-// under 1920x1080's penumbrae tens of pixels wide (02 0.00486 -> 0.00625, 06 0.00381 ->
-// 0.00484), which the bilinear blur barely touches while it smooths their noise
-// (docs/QUALITY.md, session 37).
+// (SHARP_BUDGET_SHARE): a penumbra a few pixels wide, or a sharp edge. Under a penumbra wider
+// than two pixels what it still blurs (a ramp's finer detail) counts as a quarter of the
+// bilinear blur (SHARP_BLUR_FRACTION), which lets the history grow four times as long; under a
+// narrower one the cap stays, with less blur within it. Moving after 32 frames at 320x180: 02
+// Penumbra 0.01029 -> 0.00945, 06 Night Watch 0.00642 -> 0.00502. Used wherever the view moved,
+// it did as well at 320x180 but worse under 1920x1080's penumbrae tens of pixels wide (02
+// 0.00486 -> 0.00625, 06 0.00381 -> 0.00484), which the bilinear blur barely touches while it
+// smooths their noise (docs/QUALITY.md, session 37).
 const float SHARP_BUDGET_SHARE = 0.25;
 const float SHARP_BLUR_FRACTION = 0.25;
 
@@ -205,8 +205,8 @@ vec4 catmullRomWeights(float t) {
 // The history at `base` + `f` with Catmull-Rom weights; false (and `history` untouched) where a
 // tap of non-zero weight lies outside the previous picture, shows another surface or is not
 // finite. The caller kept every bilinear tap of non-zero weight (base and the three past it), so
-// they showed the surface already; a weight that is 0 there (f 0 on an axis) is 0 here too. The result is clamped to [0, 1], which the
-// weights' negative lobes can overshoot.
+// they showed the surface already; a weight that is 0 there (f 0 on an axis) is 0 here too. The
+// result is clamped to [0, 1], which the weights' negative lobes can overshoot.
 bool sharpHistory(ivec2 base, vec2 f, uint instance, float expectedDistance, vec3 normal,
                   inout vec3 history) {
   vec4 weightsX = catmullRomWeights(f.x), weightsY = catmullRomWeights(f.y);

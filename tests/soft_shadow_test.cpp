@@ -527,8 +527,8 @@ TEST_F(SoftShadowTest, a_strafing_views_error_holds_steady_from_8_to_32_frames) 
   // first frames' samples gone by 32 frames, nothing grows). With the lattice's starts while
   // moving (sample_noise.glsl) 0.3007 0.3199 0.3270 0.2959: how the view's speed met the
   // lattice changed from one view to the next. With the history resampled by Catmull-Rom
-  // weights (denoise_temporal.comp, sharpHistory) 0.2512 0.2560 0.2544 0.2327: the cap is the same
-  // under this narrow penumbra, the blur less.
+  // weights (denoise_temporal.comp, sharpHistory) 0.2512 0.2560 0.2544 0.2327: the cap is the
+  // same under this narrow penumbra, the blur less.
   const std::vector<double> ratios =
       movingErrorOverRaw(slabScene(smallSideLight()), strafingCamera, {8, 16, 24, 32});
   std::printf("strafing: denoised over raw RMSE after 8, 16, 24, 32 frames: %.4f %.4f %.4f %.4f\n",
