@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "render/frame_time_percentiles.hpp"
+#include "render/renderer.hpp"
 
 namespace play {
 namespace {

@@ -7,7 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.hpp"
+namespace render {
+struct FrameStats;
+}
 
 namespace play {
 

@@ -205,8 +205,8 @@ vec4 catmullRomWeights(float t) {
 // The history at `base` + `f` with Catmull-Rom weights; false (and `history` untouched) where a
 // tap of non-zero weight lies outside the previous picture, shows another surface or is not
 // finite. The caller kept every bilinear tap of non-zero weight (base and the three past it), so
-// they showed the surface already; a weight that is 0 there (f 0 on an axis) is 0 here too. The
-// result is clamped to [0, 1], which the weights' negative lobes can overshoot.
+// they showed the surface and were finite already; a weight that is 0 there (f 0 on an axis) is
+// 0 here too. The result is clamped to [0, 1], which the weights' negative lobes can overshoot.
 bool sharpHistory(ivec2 base, vec2 f, uint instance, float expectedDistance, vec3 normal,
                   inout vec3 history) {
   vec4 weightsX = catmullRomWeights(f.x), weightsY = catmullRomWeights(f.y);
@@ -218,15 +218,18 @@ bool sharpHistory(ivec2 base, vec2 f, uint instance, float expectedDistance, vec
       if (weight == 0.0) continue;
       ivec2 tap = base + ivec2(i - 1, j - 1);
       bool bilinearTap = (i == 1 || i == 2) && (j == 1 || j == 2);
-      if (!bilinearTap) {
+      vec3 tapHistory;
+      if (bilinearTap) {
+        tapHistory = imageLoad(historyImage, tap).rgb;
+      } else {
         if (!insidePreviousImage(tap)) return false;
         uvec4 previousSurface = imageLoad(surfacePreviousImage, tap);
         if (previousSurface.z != instance ||
             !historyMatches(previousSurface.xy, expectedDistance, normal))
           return false;
+        tapHistory = imageLoad(historyImage, tap).rgb;
+        if (!isFinite(tapHistory)) return false;
       }
-      vec3 tapHistory = imageLoad(historyImage, tap).rgb;
-      if (!isFinite(tapHistory)) return false;
       sum += weight * tapHistory;
     }
   }
