@@ -125,18 +125,19 @@ int commandPlay(const Options& options) {
   try {
     context = std::make_unique<render::Context>(contextSettings);
     presenter = std::make_unique<render::Presenter>(*context, window.get(), settings.settings.vsync,
-                                                    compiler);
+                                                    compiler, !options.windowPass);
   } catch (const render::RenderError& error) {
     presenter.reset();
     context.reset();
     window.reset();
     return fallBack(error.what());
   }
-  std::printf("window: %ux%u, swapchain %s %s, on %s%s\n", presenter->extent().width,
+  std::printf("window: %ux%u, swapchain %s %s, on %s%s%s\n", presenter->extent().width,
               presenter->extent().height, render::Presenter::formatName(presenter->format()),
               render::Presenter::presentModeName(presenter->presentMode()),
               context->deviceInfo().name.c_str(),
-              presenter->hasOwnXConnection() ? ", presenting over its own X connection" : "");
+              presenter->hasOwnXConnection() ? ", presenting over its own X connection" : "",
+              presenter->scalesOnHost() ? ", the picture scaled by the CPU" : "");
   std::printf(
       "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause "
       "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F12 screenshot; "

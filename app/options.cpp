@@ -138,6 +138,11 @@ const std::vector<OptionSpec> kOptions{
      "exit cleanly after N world ticks (for scripts and tests)",
      {"play"}},
     {"--hud-off", "", "no heads-up display (focus frame, goal bars, exposure meters)", {"play"}},
+    {"--window-pass",
+     "",
+     "scale the picture into the window in the render pass on a CPU driver\ntoo, as on GPUs "
+     "(where the CPU scales it otherwise; to compare)",
+     {"play"}},
     {"--record",
      "FILE.json",
      "save the first level's run as a replay (until won, lost or quit)",
@@ -351,6 +356,8 @@ Options parseOptions(int argc, char** argv) {
       options.quitAfterTicks = parseCount("--quit-after-ticks", value(), 1, 100000000);
     } else if (argument == "--hud-off") {
       options.hudOff = true;
+    } else if (argument == "--window-pass") {
+      options.windowPass = true;
     } else if (argument == "--reset-progress") {
       options.resetProgress = true;
     } else if (argument == "--author") {

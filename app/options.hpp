@@ -52,6 +52,7 @@ struct Options {
   bool updateImages = false;    // replay: write image checkpoints instead of comparing
   uint64_t quitAfterTicks = 0;  // play: exit cleanly after this many ticks (0: play on)
   bool hudOff = false;          // play: no heads-up display over the picture
+  bool windowPass = false;      // play: the picture scaled by the render pass on CPU drivers too
   std::optional<std::filesystem::path> record;  // play: write the first level's run as a replay
   bool resetProgress = false;                   // play: lock every level but the first again
   bool author = false;                          // play: start with the fly camera

@@ -138,7 +138,7 @@ const char* Presenter::presentModeName(VkPresentModeKHR mode) {
 }
 
 Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync,
-                     ShaderCompiler& compiler)
+                     ShaderCompiler& compiler, bool hostScaling)
     : context_(context), window_(window), vsync_(vsync) {
   surface_.emplace(context, window);
   try {
@@ -164,6 +164,7 @@ Presenter::Presenter(const Context& context, GLFWwindow* window, bool vsync,
     fenceInfo.flags = VK_FENCE_CREATE_SIGNALED_BIT;  // nothing to wait for before the first frame
     vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &frameFinished_), "vkCreateFence");
     commands_ = context.allocateCommandBuffer();
+    if (hostScaling && context.isCpuDevice()) hostPicture_.emplace(context);
     createSwapchain();
     windowPicture_.emplace(context, compiler, renderPass_, filter);
   } catch (...) {
@@ -182,11 +183,14 @@ void Presenter::release() {
   // Presentation has no fence of its own; the queue going idle covers the last present.
   vkQueueWaitIdle(context_.queue());
   windowPicture_.reset();
+  hostPicture_.reset();
   destroySwapchainResources();
   if (swapchain_) vkDestroySwapchainKHR(device, swapchain_, nullptr);
   swapchain_ = VK_NULL_HANDLE;
-  if (renderPass_) vkDestroyRenderPass(device, renderPass_, nullptr);
-  renderPass_ = VK_NULL_HANDLE;
+  for (VkRenderPass* pass : {&renderPass_, &overPass_}) {
+    if (*pass) vkDestroyRenderPass(device, *pass, nullptr);
+    *pass = VK_NULL_HANDLE;
+  }
   captureBuffer_ = Buffer();
   if (commands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &commands_);
   commands_ = VK_NULL_HANDLE;
@@ -215,11 +219,12 @@ void Presenter::destroySwapchainResources() {
   images_.clear();
 }
 
-void Presenter::createRenderPass() {
+void Presenter::createRenderPasses() {
   VkAttachmentDescription attachment{};
   attachment.format = format_;
   attachment.samples = VK_SAMPLE_COUNT_1_BIT;
-  // Every pixel is drawn: the picture, and black beside it where it does not fill the window.
+  // renderPass_: every pixel is drawn, the picture and black beside it where it does not fill
+  // the window.
   attachment.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   attachment.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   attachment.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
@@ -258,6 +263,10 @@ void Presenter::createRenderPass() {
   info.pDependencies = dependencies.data();
   vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &renderPass_),
           "vkCreateRenderPass");
+  // overPass_: the picture is in the image already, copied in and left ready to draw over.
+  attachment.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  attachment.initialLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  vkCheck(vkCreateRenderPass(context_.device(), &info, nullptr, &overPass_), "vkCreateRenderPass");
 }
 
 void Presenter::createSwapchain() {
@@ -269,6 +278,7 @@ void Presenter::createSwapchain() {
   if (!(capabilities.supportedUsageFlags & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
     throw RenderError("the window surface's images cannot be drawn to");
   canCapture_ = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_SRC_BIT) != 0;
+  canUpload_ = (capabilities.supportedUsageFlags & VK_IMAGE_USAGE_TRANSFER_DST_BIT) != 0;
   const VkSurfaceFormatKHR surfaceFormat = chooseFormat(physicalDevice, surface_->handle());
   presentMode_ = choosePresentMode(physicalDevice, surface_->handle(), vsync_);
 
@@ -303,9 +313,10 @@ void Presenter::createSwapchain() {
   info.imageColorSpace = surfaceFormat.colorSpace;
   info.imageExtent = extent;
   info.imageArrayLayers = 1;
-  // Drawn to by the render pass; copied from for captures.
+  // Drawn to by the render pass; copied from for captures, and to for a picture the CPU scaled.
   info.imageUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   if (canCapture_) info.imageUsage |= VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  if (hostPicture_ && canUpload_) info.imageUsage |= VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   info.imageSharingMode = VK_SHARING_MODE_EXCLUSIVE;
   info.preTransform = capabilities.currentTransform;
   info.compositeAlpha = compositeAlpha;
@@ -333,7 +344,7 @@ void Presenter::createSwapchain() {
   vkCheck(vkGetSwapchainImagesKHR(context_.device(), swapchain_, &count, images_.data()),
           "vkGetSwapchainImagesKHR");
   for (uint32_t i = 0; i < count; ++i) frameDrawn_.push_back(createSemaphore(context_.device()));
-  if (!renderPass_) createRenderPass();
+  if (!renderPass_) createRenderPasses();
   for (VkImage image : images_) {
     views_.push_back(createImageView(context_, image, format_, "swapchain image"));
     VkFramebufferCreateInfo framebufferInfo{VK_STRUCTURE_TYPE_FRAMEBUFFER_CREATE_INFO};
@@ -406,6 +417,9 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   const VkDevice device = context_.device();
   collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
   vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  // The last frame's upload has finished with the buffer: scale this one into it.
+  const bool onHost = scalesOnHost() && HostScaledPicture::fits(renderer, extent_);
+  if (onHost) hostPicture_->prepare(renderer, extent_, format_);
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -427,11 +441,13 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordFrame(commands_, renderer, imageIndex, hud, overlay);
+  recordFrame(commands_, renderer, imageIndex, onHost, hud, overlay);
   vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
 
-  // The render pass writes the image at the colour output stage: wait for the acquire there.
-  const VkPipelineStageFlags waitStage = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
+  // The render pass (or the scaled picture's copy) writes the image at the colour output
+  // (transfer) stage: wait for the acquire there.
+  const VkPipelineStageFlags waitStage =
+      onHost ? VK_PIPELINE_STAGE_TRANSFER_BIT : VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.waitSemaphoreCount = 1;
   submit.pWaitSemaphores = &imageAcquired_;
@@ -487,30 +503,36 @@ void Presenter::recordCapture(VkCommandBuffer commands, VkImage target) {
 }
 
 void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
-                            std::span<const HudRect> hud, const OverlayDraw& overlay) {
+                            bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay) {
   const VkImage source = renderer.outputImage();
   const VkImage target = images_[imageIndex];
-  // The renderer's passes (and a readback copy with its layout changes) wrote the picture in
-  // earlier submits; make all of it visible to the draw's reads. It stays in GENERAL.
-  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
-                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
-  // The last frame's draw has finished (present() waited for its fence): the set is free.
-  windowPicture_->setPicture(renderer.outputView());
-
+  const VkRect2D area = fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
-  begin.renderPass = renderPass_;
   begin.framebuffer = framebuffers_[imageIndex];
   begin.renderArea.extent = extent_;
-  vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-  const VkRect2D window{{0, 0}, extent_};
-  const VkRect2D area = fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
-  // Black bars where the window's aspect ratio differs from the picture's.
-  if (area.offset.x != 0 || area.offset.y != 0 || area.extent.width != extent_.width ||
-      area.extent.height != extent_.height)
-    windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
-  windowPicture_->drawPicture(commands, area, renderer.shownWidth(), renderer.shownHeight(),
-                              renderer.outputWidth(), renderer.outputHeight());
+  if (onHost) {
+    // The picture fills the window (HostScaledPicture::fits): no bars to draw.
+    hostPicture_->recordUpload(commands, target, extent_);
+    begin.renderPass = overPass_;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+  } else {
+    // The renderer's passes (and a readback copy with its layout changes) wrote the picture in
+    // earlier submits; make all of it visible to the draw's reads. It stays in GENERAL.
+    imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
+                       VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    // The last frame's draw has finished (present() waited for its fence): the set is free.
+    windowPicture_->setPicture(renderer.outputView());
+    begin.renderPass = renderPass_;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    const VkRect2D window{{0, 0}, extent_};
+    // Black bars where the window's aspect ratio differs from the picture's.
+    if (area.offset.x != 0 || area.offset.y != 0 || area.extent.width != extent_.width ||
+        area.extent.height != extent_.height)
+      windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
+    windowPicture_->drawPicture(commands, area, renderer.shownWidth(), renderer.shownHeight(),
+                                renderer.outputWidth(), renderer.outputHeight());
+  }
 
   // The HUD over the picture, in order: a bar's fill lies over its background.
   const float width = float(area.extent.width), height = float(area.extent.height);
@@ -535,9 +557,11 @@ void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, 
 
   if (captureRequested_) recordCapture(commands, target);
   // The next frame's passes write the picture again only after this draw has read it.
-  imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
-                     VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
-                     VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+  if (!onHost) {
+    imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                       VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+  }
 }
 
 }  // namespace render

@@ -4,7 +4,8 @@
 //
 // The renderer's display image is R8G8B8A8_UNORM already holding sRGB-encoded bytes, so the
 // swapchain prefers a UNORM format: writing them to an _SRGB image would encode a second time.
-// The picture keeps its aspect ratio; the rest of the window is black.
+// The picture keeps its aspect ratio; the rest of the window is black. On CPU drivers, where it
+// fills the window at once or twice its size, the CPU scales it (HostScaledPicture).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -14,6 +15,7 @@
 #include <vulkan/vulkan.h>
 
 #include "render/buffer.hpp"
+#include "render/host_scaled_picture.hpp"
 #include "render/image_io.hpp"
 #include "render/window_picture.hpp"
 #include "render/window_surface.hpp"
@@ -50,9 +52,11 @@ class Presenter {
  public:
   // The context must have been made with ContextOptions::presentation and the instance
   // extensions glfwGetRequiredInstanceExtensions names. `compiler` compiles the shaders that
-  // draw the picture and the HUD. Throws RenderError, or ShaderCompileError when one of those
-  // shaders does not compile.
-  Presenter(const Context& context, GLFWwindow* window, bool vsync, ShaderCompiler& compiler);
+  // draw the picture and the HUD. `hostScaling`: on a CPU driver, let the CPU scale the picture
+  // where it can (false: the render pass samples it, as on GPUs). Throws RenderError, or
+  // ShaderCompileError when one of those shaders does not compile.
+  Presenter(const Context& context, GLFWwindow* window, bool vsync, ShaderCompiler& compiler,
+            bool hostScaling = true);
   ~Presenter();
   Presenter(const Presenter&) = delete;
   Presenter& operator=(const Presenter&) = delete;
@@ -91,6 +95,9 @@ class Presenter {
   VkExtent2D extent() const { return extent_; }
   VkFormat format() const { return format_; }
   VkPresentModeKHR presentMode() const { return presentMode_; }
+  // Whether the CPU may scale the picture into the window (a CPU driver, and the window's images
+  // can be copied to); it does for pictures that HostScaledPicture::fits.
+  bool scalesOnHost() const { return hostPicture_.has_value() && canUpload_; }
 
   static const char* formatName(VkFormat format);
   static const char* presentModeName(VkPresentModeKHR mode);
@@ -101,11 +108,12 @@ class Presenter {
   void destroySwapchainResources();
   // Waits for the last frame's draw, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
+  // `onHost`: the picture comes from hostPicture_ (prepared), not from the picture pass.
   void recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
-                   std::span<const HudRect> hud, const OverlayDraw& overlay);
+                   bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay);
   void recordCapture(VkCommandBuffer commands, VkImage target);
   void collectCapture();  // once the capturing frame has finished: its pixels into capture_
-  void createRenderPass();
+  void createRenderPasses();
 
   const Context& context_;
   GLFWwindow* window_;
@@ -120,10 +128,15 @@ class Presenter {
   std::vector<VkImage> images_;
   uint32_t minImageCount_ = 2;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
-  std::vector<VkImageView> views_;              // one per image
-  std::vector<VkFramebuffer> framebuffers_;     // one per image
-  std::optional<WindowPicture> windowPicture_;  // its pipelines draw in renderPass_
-  bool canCapture_ = false;                     // the images allow TRANSFER_SRC
+  // Compatible with renderPass_ (the same framebuffers and pipelines), but keeps the image's
+  // pixels: the HUD and the overlay over a picture the CPU scaled and copied in.
+  VkRenderPass overPass_ = VK_NULL_HANDLE;
+  std::vector<VkImageView> views_;                // one per image
+  std::vector<VkFramebuffer> framebuffers_;       // one per image
+  std::optional<WindowPicture> windowPicture_;    // its pipelines draw in renderPass_
+  std::optional<HostScaledPicture> hostPicture_;  // on CPU drivers, unless asked not to
+  bool canUpload_ = false;                        // the images allow TRANSFER_DST
+  bool canCapture_ = false;                       // the images allow TRANSFER_SRC
   bool captureRequested_ = false;
   Buffer captureBuffer_;  // holds the copy until the frame's fence
   bool captureInFlight_ = false;

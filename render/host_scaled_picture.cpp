@@ -1,0 +1,114 @@
+#include "render/host_scaled_picture.hpp"
+
+#include "render/barriers.hpp"
+#include "render/context.hpp"
+#include "render/picture_doubling.hpp"
+#include "render/renderer.hpp"
+#include "render/vulkan_error.hpp"
+
+namespace render {
+
+HostScaledPicture::HostScaledPicture(const Context& context) : context_(context) {
+  try {
+    readCommands_ = context.allocateCommandBuffer();
+    VkFenceCreateInfo fenceInfo{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    vkCheck(vkCreateFence(context.device(), &fenceInfo, nullptr, &readDone_), "vkCreateFence");
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+HostScaledPicture::~HostScaledPicture() {
+  release();
+}
+
+void HostScaledPicture::release() {
+  // prepare() waits for its own submit, and the presenter for the uploads it submitted.
+  const VkDevice device = context_.device();
+  if (readDone_) vkDestroyFence(device, readDone_, nullptr);
+  readDone_ = VK_NULL_HANDLE;
+  if (readCommands_) vkFreeCommandBuffers(device, context_.commandPool(), 1, &readCommands_);
+  readCommands_ = VK_NULL_HANDLE;
+}
+
+bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window) {
+  const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
+  if (renderer.shownWidth() != width || renderer.shownHeight() != height) return false;
+  for (uint32_t factor : {1u, 2u})
+    if (window.width == factor * width && window.height == factor * height) return true;
+  return false;
+}
+
+void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkFormat format) {
+  const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
+  const VkDeviceSize pictureBytes = VkDeviceSize(width) * height * 4;
+  if (picture_.size() != pictureBytes) {
+    picture_ = Buffer(context_, pictureBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                      "window picture read back");
+  }
+  const VkDeviceSize windowBytes = VkDeviceSize(window.width) * window.height * 4;
+  if (window_.size() != windowBytes) {
+    window_ = Buffer(context_, windowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
+                     "window picture scaled");
+  }
+
+  vkCheck(vkResetCommandBuffer(readCommands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(readCommands_, &beginInfo), "vkBeginCommandBuffer");
+  // The renderer's passes wrote the picture in earlier submits, and leave it in GENERAL.
+  const VkImage image = renderer.outputImage();
+  imageLayoutBarrier(readCommands_, image, VK_IMAGE_LAYOUT_GENERAL,
+                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                     VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_READ_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {width, height, 1};
+  vkCmdCopyImageToBuffer(readCommands_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                         picture_.handle(), 1, &region);
+  memoryBarrier(readCommands_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  // Back to GENERAL, and the renderer's next passes write it only after this copy has read it.
+  imageLayoutBarrier(readCommands_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                     VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
+                     VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);
+  vkCheck(vkEndCommandBuffer(readCommands_), "vkEndCommandBuffer");
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &readCommands_;
+  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, readDone_), "vkQueueSubmit");
+  vkCheck(vkWaitForFences(context_.device(), 1, &readDone_, VK_TRUE, UINT64_MAX),
+          "vkWaitForFences");
+  vkCheck(vkResetFences(context_.device(), 1, &readDone_), "vkResetFences");
+
+  const auto* source = static_cast<const uint8_t*>(picture_.mapped());
+  auto* target = static_cast<uint8_t*>(window_.mapped());
+  const bool swapRedBlue = format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+  const size_t targetRowBytes = size_t(window.width) * 4;
+  if (window.width == 2 * width)
+    doublePicture(source, width, height, target, targetRowBytes, swapRedBlue);
+  else
+    copyPicture(source, width, height, target, targetRowBytes, swapRedBlue);
+}
+
+void HostScaledPicture::recordUpload(VkCommandBuffer commands, VkImage target,
+                                     VkExtent2D window) const {
+  // The acquire's semaphore is waited for at the transfer stage, where this transition starts.
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {window.width, window.height, 1};
+  vkCmdCopyBufferToImage(commands, window_.handle(), target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                         1, &region);
+  imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                     VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
+}  // namespace render

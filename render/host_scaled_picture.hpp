@@ -1,0 +1,48 @@
+#pragma once
+// The play window's picture scaled by the CPU, for CPU drivers: the renderer's image read back
+// into host memory, doubled (or copied) into a buffer the window's size, and copied into the
+// window's image before the HUD and the overlay are drawn over it. On lavapipe the fragment
+// pass that sampled the picture over the window's 1280x720 pixels cost about 3.5 ms a frame;
+// this path costs about 1 (docs/PERFORMANCE.md, session 38). GPUs keep the pass.
+#include <cstdint>
+
+#include <vulkan/vulkan.h>
+
+#include "render/buffer.hpp"
+
+namespace render {
+
+class Context;
+class Renderer;
+
+class HostScaledPicture {
+ public:
+  explicit HostScaledPicture(const Context& context);  // throws RenderError
+  ~HostScaledPicture();
+  HostScaledPicture(const HostScaledPicture&) = delete;
+  HostScaledPicture& operator=(const HostScaledPicture&) = delete;
+
+  // Whether the renderer's picture fills a window of `window` pixels at exactly once or twice
+  // its size (the play window's usual case on CPU drivers: 2x); other sizes take the pass.
+  static bool fits(const Renderer& renderer, VkExtent2D window);
+
+  // Reads the renderer's last picture (its passes finished: a submit waited for) and writes it,
+  // scaled to `window` with its channels in `format`'s order, into the upload buffer. Only once
+  // no submitted recordUpload() of the last picture is pending. Throws RenderError.
+  void prepare(const Renderer& renderer, VkExtent2D window, VkFormat format);
+
+  // Copies the prepared picture into all of `target` (a swapchain image whose acquire the
+  // submit waits for at the transfer stage), leaving it in COLOR_ATTACHMENT_OPTIMAL, written.
+  void recordUpload(VkCommandBuffer commands, VkImage target, VkExtent2D window) const;
+
+ private:
+  void release();
+
+  const Context& context_;
+  Buffer picture_;  // the renderer's image as read back, RGBA8
+  Buffer window_;   // the window's pixels, scaled
+  VkCommandBuffer readCommands_ = VK_NULL_HANDLE;
+  VkFence readDone_ = VK_NULL_HANDLE;
+};
+
+}  // namespace render
