@@ -84,16 +84,16 @@ void horizontalRow(const uint16_t* sums, uint32_t width, uint8_t* target) {
 
 }  // namespace
 
-void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
-                   size_t targetRowBytes, bool swapRedBlue) {
-  if (width == 0 || height == 0) return;
+void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, uint32_t firstRow,
+                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue) {
+  if (width == 0 || firstRow >= endRow) return;
   const size_t rowBytes = size_t(width) * 4;
   // Two rows of sums (towards the row above and the row below), each with a pixel either side.
   const size_t sumsPerRow = size_t(width + 2) * 4;
   std::vector<uint16_t> sums(2 * sumsPerRow);
   uint16_t* upper = sums.data() + 4;
   uint16_t* lower = sums.data() + sumsPerRow + 4;
-  for (uint32_t row = 0; row < height; ++row) {
+  for (uint32_t row = firstRow; row < endRow; ++row) {
     const uint8_t* here = source + row * rowBytes;
     const uint8_t* above = source + (row > 0 ? row - 1 : 0) * rowBytes;
     const uint8_t* below = source + (row + 1 < height ? row + 1 : row) * rowBytes;
@@ -102,6 +102,11 @@ void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8
     horizontalRow(upper, width, target + size_t(2 * row) * targetRowBytes);
     horizontalRow(lower, width, target + size_t(2 * row + 1) * targetRowBytes);
   }
+}
+
+void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
+                   size_t targetRowBytes, bool swapRedBlue) {
+  doublePictureRows(source, width, height, 0, height, target, targetRowBytes, swapRedBlue);
 }
 
 void copyPicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,

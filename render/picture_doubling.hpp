@@ -16,6 +16,11 @@ namespace render {
 void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
                    size_t targetRowBytes, bool swapRedBlue);
 
+// doublePicture's output rows 2 * firstRow to 2 * endRow (exclusive) only, at their places in
+// `target`: bands of one picture can be doubled on different threads.
+void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, uint32_t firstRow,
+                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue);
+
 // The same pixels one for one (no scaling): channel order and alpha as doublePicture's.
 void copyPicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
                  size_t targetRowBytes, bool swapRedBlue);

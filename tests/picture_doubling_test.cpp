@@ -86,6 +86,21 @@ TEST(PictureDoubling, rows_land_a_stride_apart_and_leave_the_rest) {
   }
 }
 
+// Bands doubled separately (as two threads do) give the whole picture's rows, each band reading
+// the rows beyond its edges.
+TEST(PictureDoubling, bands_doubled_apart_give_the_whole_picture) {
+  const Picture picture = randomPicture(9, 7, 5);
+  const size_t rowBytes = 9 * 8;
+  std::vector<uint8_t> whole(rowBytes * 14), banded(rowBytes * 14);
+  render::doublePicture(picture.rgba.data(), 9, 7, whole.data(), rowBytes, true);
+  for (uint32_t split = 0; split <= 7; ++split) {
+    std::fill(banded.begin(), banded.end(), uint8_t(0));
+    render::doublePictureRows(picture.rgba.data(), 9, 7, split, 7, banded.data(), rowBytes, true);
+    render::doublePictureRows(picture.rgba.data(), 9, 7, 0, split, banded.data(), rowBytes, true);
+    EXPECT_EQ(banded, whole) << "split at source row " << split;
+  }
+}
+
 TEST(PictureDoubling, a_copy_keeps_each_pixel_with_its_channels_in_the_windows_order) {
   const Picture picture = randomPicture(3, 2, 11);
   for (bool swapRedBlue : {false, true}) {
