@@ -73,10 +73,12 @@ void horizontalRow(const uint16_t* sums, uint32_t width, uint8_t* target) {
 #endif
   for (; j < width; ++j) {
     const uint16_t* centre = sums + size_t(j) * 4;
+    const uint16_t* left = centre - 4;
+    const uint16_t* right = centre + 4;
     uint8_t* out = target + size_t(j) * 8;
     for (size_t channel = 0; channel < 3; ++channel) {
-      out[channel] = uint8_t((centre[channel - 4] + 3 * centre[channel] + 8) >> 4);
-      out[4 + channel] = uint8_t((3 * centre[channel] + centre[channel + 4] + 8) >> 4);
+      out[channel] = uint8_t((left[channel] + 3 * centre[channel] + 8) >> 4);
+      out[4 + channel] = uint8_t((3 * centre[channel] + right[channel] + 8) >> 4);
     }
     out[3] = out[7] = 255;
   }
