@@ -35,7 +35,18 @@ void HostScaledPicture::release() {
   readCommands_ = VK_NULL_HANDLE;
 }
 
-bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window) {
+bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window, VkFormat format) {
+  // The picture's bytes go into the image as they are: four 8-bit channels (an _SRGB image
+  // takes them as encoded already, which is what they are).
+  switch (format) {
+    case VK_FORMAT_B8G8R8A8_UNORM:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_R8G8B8A8_SRGB:
+      break;
+    default:
+      return false;
+  }
   const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
   if (renderer.shownWidth() != width || renderer.shownHeight() != height) return false;
   for (uint32_t factor : {1u, 2u})
@@ -93,7 +104,7 @@ void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkF
   const size_t targetRowBytes = size_t(window.width) * 4;
   if (window.width == 2 * width) {
     // In two bands, the lower one on a thread of its own: the driver's threads are idle until
-    // the upload is submitted (the present 0.35 ms shorter on a 2-core Xeon at 640x360).
+    // the upload is submitted (the present 0.35 ms shorter on a 2-core Xeon, 640x360 doubled).
     const uint32_t half = height / 2;
     std::thread lowerBand;
     try {
@@ -104,8 +115,9 @@ void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkF
     }
     doublePictureRows(source, width, height, 0, half, target, targetRowBytes, swapRedBlue);
     if (lowerBand.joinable()) lowerBand.join();
-  } else
+  } else {
     copyPicture(source, width, height, target, targetRowBytes, swapRedBlue);
+  }
 }
 
 void HostScaledPicture::recordUpload(VkCommandBuffer commands, VkImage target,

@@ -24,8 +24,9 @@ class HostScaledPicture {
   HostScaledPicture& operator=(const HostScaledPicture&) = delete;
 
   // Whether the renderer's picture fills a window of `window` pixels at exactly once or twice
-  // its size (the play window's usual case on CPU drivers: 2x); other sizes take the pass.
-  static bool fits(const Renderer& renderer, VkExtent2D window);
+  // its size (the play window's usual case on CPU drivers: 2x) and the window's images have
+  // 8-bit RGBA or BGRA pixels; others take the pass.
+  static bool fits(const Renderer& renderer, VkExtent2D window, VkFormat format);
 
   // Reads the renderer's last picture (its passes finished: a submit waited for) and writes it,
   // scaled to `window` with its channels in `format`'s order, into the upload buffer. Only once

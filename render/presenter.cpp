@@ -418,7 +418,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
   vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   // The last frame's upload has finished with the buffer: scale this one into it.
-  const bool onHost = scalesOnHost() && HostScaledPicture::fits(renderer, extent_);
+  const bool onHost = scalesOnHost() && HostScaledPicture::fits(renderer, extent_, format_);
   if (onHost) hostPicture_->prepare(renderer, extent_, format_);
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {

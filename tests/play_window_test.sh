@@ -117,7 +117,6 @@ for x0, x1 in ((0, 40), (360, 400)):
 assert len(set(image.crop((40, 0, 360, 180)).getdata())) > 50, "no picture between the bars"
 PY
 
-# Saved progress picks the first level not yet won; saved settings turn vsync off.
 # On a CPU driver the CPU doubles a picture that fills the window at twice its size; the render
 # pass that samples it (GPUs, and --window-pass) must show the same picture, to within rounding.
 for path in host pass; do
@@ -145,6 +144,7 @@ assert len(set(host.getdata())) > 50, "no picture"
 PY
   fail "the picture the CPU doubled differs from the render pass's"
 
+# Saved progress picks the first level not yet won; saved settings turn vsync off.
 mkdir -p "$XDG_DATA_HOME/sightline" "$XDG_CONFIG_HOME/sightline"
 echo '{"progress": 1, "completed": ["01_first_light.json"]}' >"$XDG_DATA_HOME/sightline/progress.json"
 echo '{"settings": 1, "vsync": false}' >"$XDG_CONFIG_HOME/sightline/settings.json"
