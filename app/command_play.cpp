@@ -137,7 +137,7 @@ int commandPlay(const Options& options) {
               render::Presenter::presentModeName(presenter->presentMode()),
               context->deviceInfo().name.c_str(),
               presenter->hasOwnXConnection() ? ", presenting over its own X connection" : "",
-              presenter->scalesOnHost() ? ", the picture scaled by the CPU" : "");
+              presenter->scalesOnHost() ? ", the picture scaled by the CPU at 1x and 2x" : "");
   std::printf(
       "WASD move, mouse look, Space jump, E interact (held), wheel or Q/R adjust, Esc pause "
       "(menu: levels, settings, keys), F5 restart, F11 fullscreen, V vsync, F12 screenshot; "

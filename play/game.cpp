@@ -117,6 +117,11 @@ int Game::run(const fs::path& firstLevel) {
                   double(framesShown_) / std::max(now - started, 1e-3),
                   render::frameTimePercentiles(frameMilliseconds).text().c_str());
       std::printf("frame parts: %s\n", parts.partsText(played_.simulation->probeFrames()).c_str());
+      if (presenter_.scalesOnHost()) {
+        std::printf("window picture: scaled by the CPU in %llu of %llu frames shown\n",
+                    static_cast<unsigned long long>(presenter_.hostScaledPresents()),
+                    static_cast<unsigned long long>(framesShown_));
+      }
       if (const std::string passes = parts.pictureText(); !passes.empty())
         std::printf("%s\n", passes.c_str());
       reportPictureScales();

@@ -27,7 +27,7 @@ HostScaledPicture::~HostScaledPicture() {
 }
 
 void HostScaledPicture::release() {
-  // prepare() waits for its own submit, and the presenter for the uploads it submitted.
+  // readAndScale() waits for its own submit, and the presenter for the uploads it submitted.
   const VkDevice device = context_.device();
   if (readDone_) vkDestroyFence(device, readDone_, nullptr);
   readDone_ = VK_NULL_HANDLE;
@@ -54,17 +54,17 @@ bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window, VkForm
   return false;
 }
 
-void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkFormat format) {
+void HostScaledPicture::readAndScale(const Renderer& renderer, VkExtent2D window, VkFormat format) {
   const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
   const VkDeviceSize pictureBytes = VkDeviceSize(width) * height * 4;
-  if (picture_.size() != pictureBytes) {
-    picture_ = Buffer(context_, pictureBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
-                      "window picture read back");
+  if (readBack_.size() != pictureBytes) {
+    readBack_ = Buffer(context_, pictureBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                       MemoryUse::Readback, "window picture read back");
   }
   const VkDeviceSize windowBytes = VkDeviceSize(window.width) * window.height * 4;
-  if (window_.size() != windowBytes) {
-    window_ = Buffer(context_, windowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::Upload,
-                     "window picture scaled");
+  if (windowPixels_.size() != windowBytes) {
+    windowPixels_ = Buffer(context_, windowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                           MemoryUse::Upload, "window picture scaled");
   }
 
   vkCheck(vkResetCommandBuffer(readCommands_, 0), "vkResetCommandBuffer");
@@ -81,7 +81,7 @@ void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkF
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {width, height, 1};
   vkCmdCopyImageToBuffer(readCommands_, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                         picture_.handle(), 1, &region);
+                         readBack_.handle(), 1, &region);
   memoryBarrier(readCommands_, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                 VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
   // Back to GENERAL, and the renderer's next passes write it only after this copy has read it.
@@ -98,23 +98,28 @@ void HostScaledPicture::prepare(const Renderer& renderer, VkExtent2D window, VkF
           "vkWaitForFences");
   vkCheck(vkResetFences(context_.device(), 1, &readDone_), "vkResetFences");
 
-  const auto* source = static_cast<const uint8_t*>(picture_.mapped());
-  auto* target = static_cast<uint8_t*>(window_.mapped());
+  const auto* source = static_cast<const uint8_t*>(readBack_.mapped());
+  auto* target = static_cast<uint8_t*>(windowPixels_.mapped());
   const bool swapRedBlue = format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
   const size_t targetRowBytes = size_t(window.width) * 4;
   if (window.width == 2 * width) {
     // In two bands, the lower one on a thread of its own: the driver's threads are idle until
     // the upload is submitted (the present 0.35 ms shorter on a 2-core Xeon, 640x360 doubled).
     const uint32_t half = height / 2;
-    std::thread lowerBand;
+    upperBandScratch_.resize(doublingScratchSize(width));
+    lowerBandScratch_.resize(doublingScratchSize(width));
+    auto lower = [&] {
+      doublePictureRows(source, width, height, half, height, target, targetRowBytes, swapRedBlue,
+                        lowerBandScratch_);
+    };
+    std::jthread lowerBand;  // joined on leaving, however that happens
     try {
-      lowerBand = std::thread(doublePictureRows, source, width, height, half, height, target,
-                              targetRowBytes, swapRedBlue);
+      lowerBand = std::jthread(lower);
     } catch (const std::system_error&) {  // no thread to be had: this one does both bands
-      doublePictureRows(source, width, height, half, height, target, targetRowBytes, swapRedBlue);
+      lower();
     }
-    doublePictureRows(source, width, height, 0, half, target, targetRowBytes, swapRedBlue);
-    if (lowerBand.joinable()) lowerBand.join();
+    doublePictureRows(source, width, height, 0, half, target, targetRowBytes, swapRedBlue,
+                      upperBandScratch_);
   } else {
     copyPicture(source, width, height, target, targetRowBytes, swapRedBlue);
   }
@@ -129,8 +134,8 @@ void HostScaledPicture::recordUpload(VkCommandBuffer commands, VkImage target,
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {window.width, window.height, 1};
-  vkCmdCopyBufferToImage(commands, window_.handle(), target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                         1, &region);
+  vkCmdCopyBufferToImage(commands, windowPixels_.handle(), target,
+                         VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,

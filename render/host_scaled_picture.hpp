@@ -6,6 +6,7 @@
 // picture over every window pixel to 2.0-3.1 (docs/PERFORMANCE.md, session 38). GPUs keep the
 // pass.
 #include <cstdint>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -31,18 +32,20 @@ class HostScaledPicture {
   // Reads the renderer's last picture (its passes finished: a submit waited for) and writes it,
   // scaled to `window` with its channels in `format`'s order, into the upload buffer. Only once
   // no submitted recordUpload() of the last picture is pending. Throws RenderError.
-  void prepare(const Renderer& renderer, VkExtent2D window, VkFormat format);
+  void readAndScale(const Renderer& renderer, VkExtent2D window, VkFormat format);
 
-  // Copies the prepared picture into all of `target` (a swapchain image whose acquire the
-  // submit waits for at the transfer stage), leaving it in COLOR_ATTACHMENT_OPTIMAL, written.
+  // Copies the scaled picture (readAndScale) into all of `target` (a swapchain image whose acquire
+  // the submit waits for at the transfer stage), leaving it in COLOR_ATTACHMENT_OPTIMAL, written.
   void recordUpload(VkCommandBuffer commands, VkImage target, VkExtent2D window) const;
 
  private:
   void release();
 
   const Context& context_;
-  Buffer picture_;  // the renderer's image as read back, RGBA8
-  Buffer window_;   // the window's pixels, scaled
+  Buffer readBack_;      // the renderer's image as read back, RGBA8
+  Buffer windowPixels_;  // the picture scaled to the window, in its channel order
+  // Each band's scratch space for doublePictureRows (allocated here: the bands' threads must not).
+  std::vector<uint16_t> upperBandScratch_, lowerBandScratch_;
   VkCommandBuffer readCommands_ = VK_NULL_HANDLE;
   VkFence readDone_ = VK_NULL_HANDLE;
 };

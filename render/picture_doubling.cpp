@@ -1,5 +1,7 @@
 #include "render/picture_doubling.hpp"
 
+#include <bit>
+#include <cassert>
 #include <cstring>
 #include <vector>
 
@@ -10,7 +12,9 @@
 namespace render {
 namespace {
 
-constexpr uint32_t kOpaque = 0xff000000u;  // alpha 255 in a little-endian 4-byte pixel
+// Pixels are handled as 32-bit words and 16-bit lanes in memory order.
+static_assert(std::endian::native == std::endian::little, "a little-endian CPU is assumed");
+constexpr uint32_t kOpaque = 0xff000000u;  // alpha 255 in a 4-byte pixel
 
 // One source row's weights towards an output row, per channel: 3 x the nearer source row plus
 // the farther one (4 x the vertical bilinear value). Written to sums[0, 4 * width) with red
@@ -86,15 +90,20 @@ void horizontalRow(const uint16_t* sums, uint32_t width, uint8_t* target) {
 
 }  // namespace
 
-void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, uint32_t firstRow,
-                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue) {
-  if (width == 0 || firstRow >= endRow) return;
-  const size_t rowBytes = size_t(width) * 4;
+size_t doublingScratchSize(uint32_t width) {
   // Two rows of sums (towards the row above and the row below), each with a pixel either side.
-  const size_t sumsPerRow = size_t(width + 2) * 4;
-  std::vector<uint16_t> sums(2 * sumsPerRow);
-  uint16_t* upper = sums.data() + 4;
-  uint16_t* lower = sums.data() + sumsPerRow + 4;
+  return 2 * size_t(width + 2) * 4;
+}
+
+void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, uint32_t firstRow,
+                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue,
+                       std::span<uint16_t> scratch) {
+  if (width == 0 || firstRow >= endRow) return;
+  assert(scratch.size() >= doublingScratchSize(width));
+  const size_t rowBytes = size_t(width) * 4;
+  const size_t sumsPerRow = doublingScratchSize(width) / 2;
+  uint16_t* upper = scratch.data() + 4;
+  uint16_t* lower = scratch.data() + sumsPerRow + 4;
   for (uint32_t row = firstRow; row < endRow; ++row) {
     const uint8_t* here = source + row * rowBytes;
     const uint8_t* above = source + (row > 0 ? row - 1 : 0) * rowBytes;
@@ -108,7 +117,8 @@ void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, u
 
 void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
                    size_t targetRowBytes, bool swapRedBlue) {
-  doublePictureRows(source, width, height, 0, height, target, targetRowBytes, swapRedBlue);
+  std::vector<uint16_t> scratch(doublingScratchSize(width));
+  doublePictureRows(source, width, height, 0, height, target, targetRowBytes, swapRedBlue, scratch);
 }
 
 void copyPicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,

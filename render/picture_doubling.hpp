@@ -6,6 +6,7 @@
 // whole scaling does here (docs/PERFORMANCE.md, session 38).
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 namespace render {
 
@@ -16,10 +17,16 @@ namespace render {
 void doublePicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,
                    size_t targetRowBytes, bool swapRedBlue);
 
+// How many 16-bit values of scratch space doublePictureRows needs for a picture `width` wide.
+size_t doublingScratchSize(uint32_t width);
+
 // doublePicture's output rows 2 * firstRow to 2 * endRow (exclusive) only, at their places in
-// `target`: bands of one picture can be doubled on different threads.
+// `target`, working in `scratch` (at least doublingScratchSize(width) values); it allocates
+// nothing and throws nothing. Bands of one picture can be doubled on different threads, each
+// with scratch space of its own.
 void doublePictureRows(const uint8_t* source, uint32_t width, uint32_t height, uint32_t firstRow,
-                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue);
+                       uint32_t endRow, uint8_t* target, size_t targetRowBytes, bool swapRedBlue,
+                       std::span<uint16_t> scratch);
 
 // The same pixels one for one (no scaling): channel order and alpha as doublePicture's.
 void copyPicture(const uint8_t* source, uint32_t width, uint32_t height, uint8_t* target,

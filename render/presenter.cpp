@@ -237,7 +237,8 @@ void Presenter::createRenderPasses() {
   subpass.colorAttachmentCount = 1;
   subpass.pColorAttachments = &colour;
   // After the acquire, whose semaphore the submit waits for at the colour output stage (the
-  // layout transition too); before presentation (which the semaphore orders).
+  // layout transition too; for overPass_ at the transfer stage, before recordUpload's copy and
+  // barriers); before presentation (which the semaphore orders).
   std::array<VkSubpassDependency, 2> dependencies{};
   dependencies[0].srcSubpass = VK_SUBPASS_EXTERNAL;
   dependencies[0].dstSubpass = 0;
@@ -419,7 +420,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   // The last frame's upload has finished with the buffer: scale this one into it.
   const bool onHost = scalesOnHost() && HostScaledPicture::fits(renderer, extent_, format_);
-  if (onHost) hostPicture_->prepare(renderer, extent_, format_);
+  if (onHost) hostPicture_->readAndScale(renderer, extent_, format_);
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -473,6 +474,7 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   } else {
     vkCheck(presented, "vkQueuePresentKHR");
   }
+  if (onHost) ++hostScaledPresents_;
   return true;
 }
 

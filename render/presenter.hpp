@@ -98,6 +98,8 @@ class Presenter {
   // Whether the CPU may scale the picture into the window (a CPU driver, and the window's images
   // can be copied to); it does for pictures that HostScaledPicture::fits.
   bool scalesOnHost() const { return hostPicture_.has_value() && canUpload_; }
+  // How many presents so far showed a picture the CPU scaled.
+  uint64_t hostScaledPresents() const { return hostScaledPresents_; }
 
   static const char* formatName(VkFormat format);
   static const char* presentModeName(VkPresentModeKHR mode);
@@ -108,7 +110,7 @@ class Presenter {
   void destroySwapchainResources();
   // Waits for the last frame's draw, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
-  // `onHost`: the picture comes from hostPicture_ (prepared), not from the picture pass.
+  // `onHost`: the picture comes from hostPicture_ (read and scaled), not from the picture pass.
   void recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
                    bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay);
   void recordCapture(VkCommandBuffer commands, VkImage target);
@@ -137,6 +139,7 @@ class Presenter {
   std::optional<HostScaledPicture> hostPicture_;  // on CPU drivers, unless asked not to
   bool canUpload_ = false;                        // the images allow TRANSFER_DST
   bool canCapture_ = false;                       // the images allow TRANSFER_SRC
+  uint64_t hostScaledPresents_ = 0;
   bool captureRequested_ = false;
   Buffer captureBuffer_;  // holds the copy until the frame's fence
   bool captureInFlight_ = false;

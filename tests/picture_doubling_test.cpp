@@ -93,10 +93,13 @@ TEST(PictureDoubling, bands_doubled_apart_give_the_whole_picture) {
   const size_t rowBytes = 9 * 8;
   std::vector<uint8_t> whole(rowBytes * 14), banded(rowBytes * 14);
   render::doublePicture(picture.rgba.data(), 9, 7, whole.data(), rowBytes, true);
+  std::vector<uint16_t> scratch(render::doublingScratchSize(9));
   for (uint32_t split = 0; split <= 7; ++split) {
     std::fill(banded.begin(), banded.end(), uint8_t(0));
-    render::doublePictureRows(picture.rgba.data(), 9, 7, split, 7, banded.data(), rowBytes, true);
-    render::doublePictureRows(picture.rgba.data(), 9, 7, 0, split, banded.data(), rowBytes, true);
+    render::doublePictureRows(picture.rgba.data(), 9, 7, split, 7, banded.data(), rowBytes, true,
+                              scratch);
+    render::doublePictureRows(picture.rgba.data(), 9, 7, 0, split, banded.data(), rowBytes, true,
+                              scratch);
     EXPECT_EQ(banded, whole) << "split at source row " << split;
   }
 }

@@ -128,8 +128,12 @@ for path in host pass; do
     { cat "$log"; fail "the doubled picture's run ($path) failed"; }
   grep -qi "validation" "$log" && { cat "$log"; fail "validation messages in the doubled picture's run ($path)"; }
   if [ "$path" = host ] && grep -q "^window: .* on llvmpipe" "$log"; then
-    grep -q "^window: .*, the picture scaled by the CPU$" "$log" ||
-      { cat "$log"; fail "on lavapipe the CPU does not scale the picture"; }
+    grep -Eq "^window picture: scaled by the CPU in ([0-9]+) of \1 frames shown$" "$log" ||
+      { cat "$log"; fail "on lavapipe the CPU did not scale every frame's picture"; }
+  fi
+  if [ "$path" = pass ]; then
+    grep -Eq "^window picture: scaled by the CPU in [1-9]" "$log" &&
+      { cat "$log"; fail "with --window-pass the CPU scaled the picture"; }
   fi
 done
 "$system_python" - "$capture_dir/doubled_host.png" "$capture_dir/doubled_pass.png" <<'PY' ||
