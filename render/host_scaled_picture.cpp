@@ -1,5 +1,6 @@
 #include "render/host_scaled_picture.hpp"
 
+#include <algorithm>
 #include <system_error>
 #include <thread>
 
@@ -35,7 +36,8 @@ void HostScaledPicture::release() {
   readCommands_ = VK_NULL_HANDLE;
 }
 
-bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window, VkFormat format) {
+uint32_t HostScaledPicture::factorFor(const Renderer& renderer, VkExtent2D window,
+                                      VkFormat format) {
   // The picture's bytes go into the image as they are: four 8-bit channels (an _SRGB image
   // takes them as encoded already, which is what they are).
   switch (format) {
@@ -45,25 +47,35 @@ bool HostScaledPicture::fits(const Renderer& renderer, VkExtent2D window, VkForm
     case VK_FORMAT_R8G8B8A8_SRGB:
       break;
     default:
-      return false;
+      return 0;
   }
   const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
-  if (renderer.shownWidth() != width || renderer.shownHeight() != height) return false;
-  for (uint32_t factor : {1u, 2u})
-    if (window.width == factor * width && window.height == factor * height) return true;
-  return false;
+  if (renderer.shownWidth() != width || renderer.shownHeight() != height) return 0;
+  auto near = [](uint32_t scaled, uint32_t side) {
+    return (scaled > side ? scaled - side : side - scaled) <= kSlackPixels;
+  };
+  for (uint32_t factor : {2u, 1u})
+    if (near(factor * width, window.width) && near(factor * height, window.height)) return factor;
+  return 0;
 }
 
-void HostScaledPicture::readAndScale(const Renderer& renderer, VkExtent2D window, VkFormat format) {
+VkRect2D HostScaledPicture::placement(VkExtent2D window) const {
+  return {{(int32_t(window.width) - int32_t(scaledSize_.width)) / 2,
+           (int32_t(window.height) - int32_t(scaledSize_.height)) / 2},
+          scaledSize_};
+}
+
+void HostScaledPicture::readAndScale(const Renderer& renderer, uint32_t factor, VkFormat format) {
   const uint32_t width = renderer.outputWidth(), height = renderer.outputHeight();
   const VkDeviceSize pictureBytes = VkDeviceSize(width) * height * 4;
   if (readBack_.size() != pictureBytes) {
     readBack_ = Buffer(context_, pictureBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                        MemoryUse::Readback, "window picture read back");
   }
-  const VkDeviceSize windowBytes = VkDeviceSize(window.width) * window.height * 4;
-  if (windowPixels_.size() != windowBytes) {
-    windowPixels_ = Buffer(context_, windowBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+  scaledSize_ = {factor * width, factor * height};
+  const VkDeviceSize scaledBytes = VkDeviceSize(scaledSize_.width) * scaledSize_.height * 4;
+  if (scaledPixels_.size() != scaledBytes) {
+    scaledPixels_ = Buffer(context_, scaledBytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                            MemoryUse::Upload, "window picture scaled");
   }
 
@@ -99,10 +111,10 @@ void HostScaledPicture::readAndScale(const Renderer& renderer, VkExtent2D window
   vkCheck(vkResetFences(context_.device(), 1, &readDone_), "vkResetFences");
 
   const auto* source = static_cast<const uint8_t*>(readBack_.mapped());
-  auto* target = static_cast<uint8_t*>(windowPixels_.mapped());
+  auto* target = static_cast<uint8_t*>(scaledPixels_.mapped());
   const bool swapRedBlue = format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
-  const size_t targetRowBytes = size_t(window.width) * 4;
-  if (window.width == 2 * width) {
+  const size_t targetRowBytes = size_t(scaledSize_.width) * 4;
+  if (factor == 2) {
     // In two bands, the lower one on a thread of its own: the driver's threads are idle until
     // the upload is submitted (the present 0.35 ms shorter on a 2-core Xeon, 640x360 doubled).
     const uint32_t half = height / 2;
@@ -131,10 +143,29 @@ void HostScaledPicture::recordUpload(VkCommandBuffer commands, VkImage target,
   imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_UNDEFINED,
                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  // The part of the picture inside the window, and where it goes there.
+  const VkRect2D placed = placement(window);
+  const uint32_t skipX = uint32_t(std::max(-placed.offset.x, 0));
+  const uint32_t skipY = uint32_t(std::max(-placed.offset.y, 0));
+  const int32_t toX = std::max(placed.offset.x, 0), toY = std::max(placed.offset.y, 0);
+  const uint32_t width = std::min(scaledSize_.width - skipX, window.width - uint32_t(toX));
+  const uint32_t height = std::min(scaledSize_.height - skipY, window.height - uint32_t(toY));
+  if (width < window.width || height < window.height) {  // a black edge where it does not reach
+    const VkClearColorValue black{{0.0f, 0.0f, 0.0f, 1.0f}};
+    const VkImageSubresourceRange everything{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    vkCmdClearColorImage(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &black, 1,
+                         &everything);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  }
   VkBufferImageCopy region{};
+  region.bufferOffset = (VkDeviceSize(skipY) * scaledSize_.width + skipX) * 4;
+  region.bufferRowLength = scaledSize_.width;
+  region.bufferImageHeight = scaledSize_.height;
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-  region.imageExtent = {window.width, window.height, 1};
-  vkCmdCopyBufferToImage(commands, windowPixels_.handle(), target,
+  region.imageOffset = {toX, toY, 0};
+  region.imageExtent = {width, height, 1};
+  vkCmdCopyBufferToImage(commands, scaledPixels_.handle(), target,
                          VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   imageLayoutBarrier(commands, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,

@@ -24,18 +24,29 @@ class HostScaledPicture {
   HostScaledPicture(const HostScaledPicture&) = delete;
   HostScaledPicture& operator=(const HostScaledPicture&) = delete;
 
-  // Whether the renderer's picture fills a window of `window` pixels at exactly once or twice
-  // its size (the play window's usual case on CPU drivers: 2x) and the window's images have
-  // 8-bit RGBA or BGRA pixels; others take the pass.
-  static bool fits(const Renderer& renderer, VkExtent2D window, VkFormat format);
+  // How many pixels a side the picture at twice (or once) its size may differ from the window's
+  // and still be shown so, centred: cut at the window's edges, or with a black edge. The play
+  // window's output size on a CPU driver is twice the render size, which is the window's times
+  // the render scale, rounded: 1366x768 at 0.25 gives 684x384, doubled 1368x768.
+  static constexpr uint32_t kSlackPixels = 2;
+
+  // The factor (2, else 1) at which the renderer's picture fills a window of `window` pixels to
+  // within kSlackPixels a side, where the window's images have 8-bit RGBA or BGRA pixels; 0 when
+  // there is none (others take the pass).
+  static uint32_t factorFor(const Renderer& renderer, VkExtent2D window, VkFormat format);
 
   // Reads the renderer's last picture (its passes finished: a submit waited for) and writes it,
-  // scaled to `window` with its channels in `format`'s order, into the upload buffer. Only once
-  // no submitted recordUpload() of the last picture is pending. Throws RenderError.
-  void readAndScale(const Renderer& renderer, VkExtent2D window, VkFormat format);
+  // at `factor` times its size with its channels in `format`'s order, into the upload buffer.
+  // Only once no submitted recordUpload() of the last picture is pending. Throws RenderError.
+  void readAndScale(const Renderer& renderer, uint32_t factor, VkFormat format);
 
-  // Copies the scaled picture (readAndScale) into all of `target` (a swapchain image whose acquire
-  // the submit waits for at the transfer stage), leaving it in COLOR_ATTACHMENT_OPTIMAL, written.
+  // Where the scaled picture lies in a window of `window` pixels: centred, its offset negative
+  // where it is cut.
+  VkRect2D placement(VkExtent2D window) const;
+
+  // Copies the scaled picture (readAndScale) into `target` (a swapchain image of `window` pixels
+  // whose acquire the submit waits for at the transfer stage), black where it does not reach,
+  // leaving it in COLOR_ATTACHMENT_OPTIMAL, written.
   void recordUpload(VkCommandBuffer commands, VkImage target, VkExtent2D window) const;
 
  private:
@@ -43,7 +54,8 @@ class HostScaledPicture {
 
   const Context& context_;
   Buffer readBack_;      // the renderer's image as read back, RGBA8
-  Buffer windowPixels_;  // the picture scaled to the window, in its channel order
+  Buffer scaledPixels_;  // the picture scaled, in the window's channel order
+  VkExtent2D scaledSize_{};
   // Each band's scratch space for doublePictureRows (allocated here: the bands' threads must not).
   std::vector<uint16_t> upperBandScratch_, lowerBandScratch_;
   VkCommandBuffer readCommands_ = VK_NULL_HANDLE;

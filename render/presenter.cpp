@@ -419,8 +419,10 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   collectCapture();  // keeps it for takeCapture; the buffer is free for the next one
   vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   // The last frame's upload has finished with the buffer: scale this one into it.
-  const bool onHost = scalesOnHost() && HostScaledPicture::fits(renderer, extent_, format_);
-  if (onHost) hostPicture_->readAndScale(renderer, extent_, format_);
+  const uint32_t hostFactor =
+      scalesOnHost() ? HostScaledPicture::factorFor(renderer, extent_, format_) : 0;
+  const bool onHost = hostFactor != 0;
+  if (onHost) hostPicture_->readAndScale(renderer, hostFactor, format_);
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -508,12 +510,15 @@ void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, 
                             bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay) {
   const VkImage source = renderer.outputImage();
   const VkImage target = images_[imageIndex];
-  const VkRect2D area = fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
+  // Where the picture lies, for the HUD too.
+  const VkRect2D area =
+      onHost ? hostPicture_->placement(extent_)
+             : fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.framebuffer = framebuffers_[imageIndex];
   begin.renderArea.extent = extent_;
   if (onHost) {
-    // The picture fills the window (HostScaledPicture::fits): no bars to draw.
+    // The upload fills the window, black where the picture does not reach.
     hostPicture_->recordUpload(commands, target, extent_);
     begin.renderPass = overPass_;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);

@@ -5,7 +5,8 @@
 // The renderer's display image is R8G8B8A8_UNORM already holding sRGB-encoded bytes, so the
 // swapchain prefers a UNORM format: writing them to an _SRGB image would encode a second time.
 // The picture keeps its aspect ratio; the rest of the window is black. On CPU drivers, where it
-// fills the window at once or twice its size, the CPU scales it (HostScaledPicture).
+// fills the window at once or twice its size (to within two pixels a side), the CPU scales it
+// (HostScaledPicture).
 #include <cstdint>
 #include <functional>
 #include <optional>
@@ -96,7 +97,7 @@ class Presenter {
   VkFormat format() const { return format_; }
   VkPresentModeKHR presentMode() const { return presentMode_; }
   // Whether the CPU may scale the picture into the window (a CPU driver, and the window's images
-  // can be copied to); it does for pictures that HostScaledPicture::fits.
+  // can be copied to); it does where HostScaledPicture::factorFor finds a factor.
   bool scalesOnHost() const { return hostPicture_.has_value() && canUpload_; }
   // How many presents so far showed a picture the CPU scaled.
   uint64_t hostScaledPresents() const { return hostScaledPresents_; }

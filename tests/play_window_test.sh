@@ -148,6 +148,38 @@ assert len(set(host.getdata())) > 50, "no picture"
 PY
   fail "the picture the CPU doubled differs from the render pass's"
 
+# A window a pixel or two from twice the picture's size (1366x768 at the default scale gives a
+# 684x384 picture): the CPU still doubles it, centred, cut at the window's edges or with a
+# black edge; the same pixels as in the 640x360 window.
+for window in 642x362 638x358; do
+  env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x720x24" \
+    "$sightline" play "$level" --validate --size 320x180 --window "$window" --hud-off \
+    --no-upscale --quit-after-ticks 40 --capture "$capture_dir/near_$window.png" >"$log" 2>&1 ||
+    { cat "$log"; fail "the run in a $window window failed"; }
+  grep -qi "validation" "$log" && { cat "$log"; fail "validation messages in the $window window"; }
+  if grep -q "^window: .* on llvmpipe" "$log"; then
+    grep -Eq "^window picture: scaled by the CPU in ([0-9]+) of \1 frames shown$" "$log" ||
+      { cat "$log"; fail "on lavapipe the CPU did not scale the picture in a $window window"; }
+  fi
+done
+if grep -q "^window: .* on llvmpipe" "$log"; then
+  "$system_python" - "$capture_dir" <<'PY' || fail "the picture in a window near twice its size is not the doubled picture"
+import sys
+from PIL import Image
+folder = sys.argv[1]
+exact = Image.open(f"{folder}/doubled_host.png").convert("RGB")
+wider = Image.open(f"{folder}/near_642x362.png").convert("RGB")
+narrower = Image.open(f"{folder}/near_638x358.png").convert("RGB")
+assert wider.size == (642, 362) and narrower.size == (638, 358), (wider.size, narrower.size)
+assert list(wider.crop((1, 1, 641, 361)).getdata()) == list(exact.getdata()), "padded picture"
+edge = set(wider.crop((0, 0, 642, 1)).getdata()) | set(wider.crop((0, 0, 1, 362)).getdata())
+edge |= set(wider.crop((0, 361, 642, 362)).getdata()) | set(wider.crop((641, 0, 642, 362)).getdata())
+assert edge == {(0, 0, 0)}, sorted(edge)[:5]
+assert list(narrower.getdata()) == list(exact.crop((1, 1, 639, 359)).getdata()), "cut picture"
+print("a window a pixel wider or narrower a side shows the doubled picture, centred")
+PY
+fi
+
 # Saved progress picks the first level not yet won; saved settings turn vsync off.
 mkdir -p "$XDG_DATA_HOME/sightline" "$XDG_CONFIG_HOME/sightline"
 echo '{"progress": 1, "completed": ["01_first_light.json"]}' >"$XDG_DATA_HOME/sightline/progress.json"
