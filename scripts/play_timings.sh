@@ -29,7 +29,7 @@ for level in "${levels[@]}"; do
   echo "== $name"
   HOME="$home" xvfb-run -a -s "-screen 0 1280x720x24" "$binary" play "$level" \
     --quit-after-ticks 600 "${capture[@]}" ${PLAY_OPTIONS:-} 2>&1 |
-    grep -E "^(playing|quit after|frame parts|picture scale)" || true
+    grep -E "^(playing|quit after|frame parts|window picture|picture scale)" || true
   "$binary" bench "$level" --frames 60 --embree-frames 0 --size 320x180 2>&1 |
     grep -E "^${name} " | head -1 | awk '{print "bench: " $4 " ms, " $5 " fps"}'  || true
   # What the window's picture costs before it is drawn into the window: on a CPU driver play
