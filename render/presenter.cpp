@@ -476,7 +476,12 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   } else {
     vkCheck(presented, "vkQueuePresentKHR");
   }
-  if (onHost) ++hostScaledPresents_;
+  if (onHost) {
+    ++hostScaledPresents_;
+    // Let the X server take the image now rather than beside the next frame's passes (on a CPU
+    // driver they share the cores).
+    surface_->waitForServer();
+  }
   return true;
 }
 

@@ -1,5 +1,6 @@
 #include "render/window_surface.hpp"
 
+#include <cstdlib>
 #include <cstring>
 #include <span>
 #include <string>
@@ -81,6 +82,14 @@ WindowSurface::WindowSurface(const Context& context, GLFWwindow* window) : conte
   const VkResult result = glfwCreateWindowSurface(context.instance(), window, nullptr, &surface_);
   if (result != VK_SUCCESS)
     throw RenderError(std::string("glfwCreateWindowSurface failed (") + vkResultName(result) + ")");
+}
+
+void WindowSurface::waitForServer() const {
+#if SIGHTLINE_GLFW_HAS_X11
+  if (!connection_) return;
+  // Any request with a reply will do: the server answers requests in order.
+  std::free(xcb_get_input_focus_reply(connection_, xcb_get_input_focus(connection_), nullptr));
+#endif
 }
 
 WindowSurface::~WindowSurface() {

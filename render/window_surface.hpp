@@ -30,6 +30,11 @@ class WindowSurface {
   VkSurfaceKHR handle() const { return surface_; }
   // Whether the surface has an X connection of its own (see above).
   bool hasOwnConnection() const { return connection_ != nullptr; }
+  // With a connection of its own: returns once the X server has handled every request sent on
+  // it, the presented images included (a round trip). Otherwise returns at once. On two cores
+  // the server's copy of an image, left to run beside the next frame, cost that frame's passes
+  // more than waiting for it here (docs/PERFORMANCE.md, session 38).
+  void waitForServer() const;
 
  private:
   const Context& context_;
