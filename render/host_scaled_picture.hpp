@@ -1,10 +1,10 @@
 #pragma once
 // The play window's picture scaled by the CPU, for CPU drivers: the renderer's image read back
-// into host memory, doubled (or copied) into a buffer the window's size, and copied into the
-// window's image before the HUD and the overlay are drawn over it. On lavapipe, in a 1280x720
-// window, the present went from 4.2-5.0 ms a frame with the fragment pass that sampled the
-// picture over every window pixel to 2.0-3.1 (docs/PERFORMANCE.md, session 38). GPUs keep the
-// pass.
+// into host memory, doubled (or copied) into a host buffer, and copied into the window's image,
+// centred, before the HUD and the overlay are drawn over it. On lavapipe, in a 1280x720 window,
+// the present went from 4.2-5.0 ms a frame with the fragment pass that sampled the picture over
+// every window pixel to 2.3-3.5, the wait for the X server included (docs/PERFORMANCE.md,
+// session 38). GPUs keep the pass.
 #include <cstdint>
 #include <vector>
 
