@@ -354,9 +354,9 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   if (!seenFromEye.empty() && seenFromEye.size() < tlasInstances.size())
     eyeLevel_ = std::make_unique<TopLevelSubset>(context, tlasInstances, std::move(seenFromEye));
 
-  hdrImage_ = std::make_unique<StorageImage>(context, options.width, options.height,
-                                             VK_FORMAT_R32G32B32A32_SFLOAT,
-                                             VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hdr radiance");
+  radiance_ = Buffer(context, VkDeviceSize(options.width) * options.height * sizeof(glm::vec4),
+                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                     MemoryUse::DeviceOnly, "linear radiance");
   outputImage_ = std::make_unique<StorageImage>(
       context, options.width, options.height, VK_FORMAT_R8G8B8A8_UNORM,
       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "display image");
@@ -434,7 +434,7 @@ void Renderer::createDescriptors() {
   const std::array<std::pair<uint32_t, VkDescriptorType>, 16> bindings = {{
       {BINDING_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
       {BINDING_GLASS_TLAS, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR},
-      {BINDING_HDR_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+      {BINDING_RADIANCE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
       {BINDING_OUTPUT_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
       {BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
       {BINDING_INSTANCES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
@@ -471,6 +471,9 @@ void Renderer::createDescriptors() {
   }
   std::vector<std::pair<uint32_t, const Buffer*>> passBuffers;
   if (denoiser_) passBuffers = denoiser_->bufferBindings();
+  if (upscaler_) {
+    for (const auto& entry : upscaler_->bufferBindings()) passBuffers.push_back(entry);
+  }
   for (const auto& [binding, buffer] : passBuffers) {
     layoutBindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, kAllStages, nullptr});
     poolSizes.push_back({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kSets});
@@ -502,7 +505,8 @@ void Renderer::createDescriptors() {
   VkAccelerationStructureKHR glassTlas = glassLevel_ ? glassLevel_->structure().handle() : tlas;
   VkWriteDescriptorSetAccelerationStructureKHR glassTlasWrite = tlasWrite;
   glassTlasWrite.pAccelerationStructures = &glassTlas;
-  const std::array<std::pair<uint32_t, const Buffer*>, 12> buffers = {{
+  const std::array<std::pair<uint32_t, const Buffer*>, 13> buffers = {{
+      {BINDING_RADIANCE, &radiance_},
       {BINDING_FRAME, &frameUniforms_},
       {BINDING_INSTANCES, &instances_},
       {BINDING_MATERIALS, &materials_},
@@ -523,7 +527,7 @@ void Renderer::createDescriptors() {
   allBuffers.insert(allBuffers.end(), passBuffers.begin(), passBuffers.end());
   for (uint32_t parity = 0; parity < kSets; ++parity) {
     std::vector<std::pair<uint32_t, VkImageView>> storageImages = {
-        {BINDING_HDR_IMAGE, hdrImage_->view()}, {BINDING_OUTPUT_IMAGE, outputImage_->view()}};
+        {BINDING_OUTPUT_IMAGE, outputImage_->view()}};
     if (denoiser_) {
       for (const auto& entry : denoiser_->bindings(parity)) storageImages.push_back(entry);
     }
@@ -669,20 +673,24 @@ void Renderer::writeLightMotion(bool fullFrame) {
   lightHistoryPositions_ = lightPositions_;
 }
 
-std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
-  Buffer staging(context_, paths_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
-                 "pixel paths readback");
+void Renderer::readRayGenOutput(const Buffer& output, void* into) const {
+  Buffer staging(context_, output.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                 "ray-gen output readback");
   context_.submitAndWait([&](VkCommandBuffer commands) {
     memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
                   VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_READ_BIT);
-    const VkBufferCopy copy{0, 0, paths_.size()};
-    vkCmdCopyBuffer(commands, paths_.handle(), staging.handle(), 1, &copy);
+    const VkBufferCopy copy{0, 0, output.size()};
+    vkCmdCopyBuffer(commands, output.handle(), staging.handle(), 1, &copy);
     memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
                   VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
   });
+  staging.read(into, output.size());
+}
+
+std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
   std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
-  staging.read(result.data(), result.size() * sizeof(gpu::PixelPath));
+  readRayGenOutput(paths_, result.data());
   return result;
 }
 
@@ -1086,7 +1094,9 @@ std::vector<glm::vec4> Renderer::readDenoiser(DenoiserImage which) const {
 }
 
 std::vector<glm::vec4> Renderer::readRadiance() const {
-  return readTexels(context_, *hdrImage_, false);
+  std::vector<glm::vec4> result(size_t(options_.width) * options_.height);
+  readRayGenOutput(radiance_, result.data());
+  return result;
 }
 
 void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments) {

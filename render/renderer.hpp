@@ -192,6 +192,8 @@ class Renderer {
  private:
   void destroyHandles();  // what the destructor does, also for a constructor that throws
   void createDescriptors();
+  // Copies `output`, a buffer ray-gen writes, whole into `into` (waits).
+  void readRayGenOutput(const Buffer& output, void* into) const;
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);
   void moveRenderOrigin(const glm::dvec3& origin);
@@ -262,7 +264,7 @@ class Renderer {
   std::vector<glm::vec3> lightRadiances_;  // as the level made them, before any tint
   std::vector<std::unique_ptr<Texture>> textures_;
   VkSampler sampler_ = VK_NULL_HANDLE;
-  std::unique_ptr<StorageImage> hdrImage_;
+  Buffer radiance_;  // ray-gen's linear radiance, a vec4 a render pixel (readRadiance)
   std::unique_ptr<StorageImage> outputImage_;
 
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;

@@ -66,8 +66,8 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                 " is smaller than the render size " + std::to_string(renderWidth) +
                                 "x" + std::to_string(renderHeight));
   }
-  motion_ = std::make_unique<StorageImage>(context, renderWidth, renderHeight,
-                                           VK_FORMAT_R32G32B32A32_SFLOAT, 0, "upscale motion");
+  motion_ = Buffer(context, VkDeviceSize(renderWidth) * renderHeight * sizeof(glm::vec4),
+                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceOnly, "upscale motion");
   const VkImageUsageFlags written = attachments_ ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : 0;
   display_ = std::make_unique<StorageImage>(
       context, outputWidth, outputHeight, kDisplayFormat,
@@ -141,7 +141,6 @@ void TemporalUpscaler::createRenderPass() {
 std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_t parity) const {
   const uint32_t current = parity & 1u, previous = current ^ 1u;
   std::vector<std::pair<uint32_t, VkImageView>> images = {
-      {BINDING_UPSCALE_MOTION, motion_->view()},
       {BINDING_UPSCALE_HISTORY, history_[previous]->view()},
   };
   if (!attachments_) {
@@ -149,6 +148,10 @@ std::vector<std::pair<uint32_t, VkImageView>> TemporalUpscaler::bindings(uint32_
     images.push_back({BINDING_DISPLAY_IMAGE, display_->view()});
   }
   return images;
+}
+
+std::vector<std::pair<uint32_t, const Buffer*>> TemporalUpscaler::bufferBindings() const {
+  return {{BINDING_UPSCALE_MOTION, &motion_}};
 }
 
 void TemporalUpscaler::createPipeline(ShaderCompiler& compiler, VkPipelineLayout layout,

@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 #include <glm/glm.hpp>
 
+#include "render/buffer.hpp"
 #include "render/shader_compiler.hpp"
 #include "render/storage_image.hpp"
 
@@ -50,6 +51,8 @@ class TemporalUpscaler {
 
   // Storage images by binding for frame parity 0 or 1 ("previous" bindings get the other's).
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
+  // Storage buffers by binding: ray-gen's motion, a vec4 a render pixel.
+  std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
   // `mirrors`: the scene has mirrors, whose reflections ray-gen gives a motion of their own.
   // `heldPoints`: under a camera held still, a pixel around which nothing moved reads no motion
   // (RendererOptions::heldPointResolve), in a pipeline of its own.
@@ -77,7 +80,8 @@ class TemporalUpscaler {
   const Context& context_;
   uint32_t outputWidth_, outputHeight_;
   bool attachments_;  // the fragment shader's colour attachments, else image stores
-  std::unique_ptr<StorageImage> motion_, display_;
+  Buffer motion_;
+  std::unique_ptr<StorageImage> display_;
   std::array<std::unique_ptr<StorageImage>, 2> history_;
   VkRenderPass renderPass_ = VK_NULL_HANDLE;
   std::array<VkFramebuffer, 2> framebuffers_{};       // by the parity of the history written

@@ -14,7 +14,7 @@ using uint = uint32_t;
 
 // Binding numbers of descriptor set 0, shared by the ray tracing and compute pipelines.
 #define BINDING_TLAS 0
-#define BINDING_HDR_IMAGE 1
+#define BINDING_RADIANCE 1  // vec4 a render pixel, row after row: ray-gen's linear radiance
 #define BINDING_OUTPUT_IMAGE 2
 #define BINDING_FRAME 3
 #define BINDING_INSTANCES 4
@@ -57,9 +57,9 @@ using uint = uint32_t;
 #define BINDING_TRIANGLE_MATERIALS 27  // per-triangle materials of meshes with several
 // Temporal upscaling (a renderer with an output size): ray-gen's motion at the render size, and
 // the history and picture at the output size.
-// rgba32f: previous pixel xy, distance z, first instance + 1 w; in a mirror that held still the
-// reflection's previous pixel, the mirror's distance and minus (the mirror + 1) (ray-gen's
-// writeUpscaleMotion)
+// A storage buffer of vec4, a row of render pixels after another: previous pixel xy, distance z,
+// first instance + 1 w; in a mirror that held still the reflection's previous pixel, the
+// mirror's distance and minus (the mirror + 1) (ray-gen's writeUpscaleMotion)
 #define BINDING_UPSCALE_MOTION 28
 // rgba32ui: accumulated display rgb and its weight as four half floats (xy), the instance + 1
 // the history shows (z; 0: none); the previous frame's

@@ -22,8 +22,10 @@ layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBlock { G
 // The tonemap's output at the render size.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
 // Ray-gen's motion: where each sample's point was in the previous frame (ray-gen's
-// writeUpscaleMotion says what it holds for a reflection).
-layout(set = 0, binding = BINDING_UPSCALE_MOTION, rgba32f) uniform readonly image2D motionImage;
+// writeUpscaleMotion says what it holds for a reflection), a row of render pixels after another.
+layout(set = 0, binding = BINDING_UPSCALE_MOTION, std430) readonly buffer UpscaleMotionBlock {
+  vec4 upscaleMotion[];
+};
 // The history: its rgb and weight as four half floats (packHalf2x16 of rg and of b and the
 // weight) and the instance + 1 it shows (0: none), one read and one store a pixel.
 layout(set = 0, binding = BINDING_UPSCALE_HISTORY, rgba32ui) uniform readonly uimage2D historyImage;
@@ -109,6 +111,11 @@ const float kSameSurfaceDepth = 0.3;
 
 #include "view_motion.glsl"
 
+// Ray-gen's motion for the sample at render pixel `at` (on the picture).
+vec4 loadMotion(ivec2 at) {
+  return upscaleMotion[at.y * int(frame.sizeFrameLights.x) + at.x];
+}
+
 #if HAS_MIRRORS
 // Where the point at `distance` along the camera ray of render pixel `renderPixel` was in the
 // previous frame: ray-gen's motion of a surface that held still, found again from its distance.
@@ -139,7 +146,7 @@ bool nearerInDepth(float candidate, float chosen) {
 // The motion ray-gen wrote for the sample at render pixel `at`, xy made how far its point moved
 // (render pixels; the sample lies at `at` + `jitter`).
 vec4 sampleMotion(ivec2 at, vec2 jitter) {
-  vec4 motion = imageLoad(motionImage, at);
+  vec4 motion = loadMotion(at);
   motion.xy -= vec2(at) + jitter;
   return motion;
 }
@@ -386,9 +393,9 @@ vec4 heldPointHistory(ivec2 pixel, vec2 samplePosition, vec2 base, vec3 low, vec
   ivec2 nearest = cornerSample(base, nearestCornerTo(fraction), renderSize);
   uvec4 texel = imageLoad(historyImage, pixel);
   if (instanceMoved(texel.z)) {
-    vec2 chosen = imageLoad(motionImage, nearest).zw;  // depth and instance
+    vec2 chosen = loadMotion(nearest).zw;  // depth and instance
     for (int corner = 0; corner < 4; ++corner) {
-      vec2 candidate = imageLoad(motionImage, cornerSample(base, corner, renderSize)).zw;
+      vec2 candidate = loadMotion(cornerSample(base, corner, renderSize)).zw;
       if (nearerInDepth(candidate.x, chosen.x)) chosen = candidate;
     }
     seenInstance = uint(abs(chosen.y));

@@ -50,7 +50,7 @@ vec3 visibilityAtRay(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.sizeFrameLights.x) || pixel.y >= int(frame.sizeFrameLights.y)) return;
-  vec4 traced = imageLoad(hdrImage, pixel);
+  vec4 traced = tracedRadiance[pixel.y * int(frame.sizeFrameLights.x) + pixel.x];
   vec3 radiance = traced.rgb;
 #if SOFT_SHADOWS
   radiance += imageLoad(softLightImage, pixel).rgb * visibilityAtRay(pixel);
