@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "render/barriers.hpp"
 #include "render/context.hpp"
 #include "render/vulkan_error.hpp"
 
@@ -101,6 +102,20 @@ void Buffer::write(const void* data, VkDeviceSize bytes, VkDeviceSize offset) {
 void Buffer::read(void* data, VkDeviceSize bytes, VkDeviceSize offset) const {
   if (!mapped_ || offset + bytes > size_) throw RenderError("Buffer::read outside the buffer");
   std::memcpy(data, static_cast<const char*>(mapped_) + offset, bytes);
+}
+
+void readDeviceBuffer(const Context& context, const Buffer& source, void* into) {
+  Buffer staging(context, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
+                 "buffer readback");
+  context.submitAndWait([&](VkCommandBuffer commands) {
+    memoryBarrier(commands, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    const VkBufferCopy copy{0, 0, source.size()};
+    vkCmdCopyBuffer(commands, source.handle(), staging.handle(), 1, &copy);
+    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
+  });
+  staging.read(into, source.size());
 }
 
 }  // namespace render

@@ -51,6 +51,10 @@ class Buffer {
   void* mapped_ = nullptr;
 };
 
+// Copies the whole of `source`, a device buffer that shaders wrote (TRANSFER_SRC usage), into
+// `into` (source.size() bytes); submits and waits.
+void readDeviceBuffer(const Context& context, const Buffer& source, void* into);
+
 constexpr VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
   return (value + alignment - 1) / alignment * alignment;
 }

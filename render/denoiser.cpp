@@ -94,10 +94,20 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
+  // What ray-gen writes is in storage buffers, a value per pixel (frame_bindings.glsl says why).
+  auto makePixelBuffer = [&](VkDeviceSize bytesPerPixel, const std::string& name) {
+    return Buffer(context, VkDeviceSize(width) * height * bytesPerPixel,
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  MemoryUse::DeviceOnly, name);
+  };
   // Full floats: unshadowed light of a bright lamp passes half float's 65504 (then Inf, and
   // Inf times a visibility of 0 is NaN).
-  softLight_ = make(VK_FORMAT_R32G32B32A32_SFLOAT, "soft light");
-  visibilityRaw_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "raw visibility");
+  softLight_ = makePixelBuffer(sizeof(glm::vec4), "soft light");
+  // The raw visibility and the surface, which the passes read many times a pixel, are copied
+  // into images (recordInputCopies).
+  visibilityWritten_ = makePixelBuffer(sizeof(uint64_t), "raw visibility written");
+  surfaceWritten_ = makePixelBuffer(sizeof(glm::uvec4), "surface written");
+  visibilityRaw_ = make(kVisibilityFormat, "raw visibility");
   // On GPUs the passes are limited by memory traffic, so what tolerates fewer bits has them
   // (docs/PERFORMANCE.md, session 12). The motion (an offset of a few pixels in half floats and
   // a distance) takes 8 bytes, as does the surface (a normal in two 16-bit numbers and a
@@ -108,12 +118,12 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   // alpha) keeps full floats: a running average in half floats moves in steps of 1/2048 near 1
   // (07's error after 32 frames 9 % worse), and a reference accumulation counts past half
   // float's 2048 exact integers.
-  motion_ = make(VK_FORMAT_R32G32_UINT, "motion");
+  motion_ = makePixelBuffer(sizeof(glm::uvec2), "motion");
   filterA_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter ping");
   filterB_ = make(VK_FORMAT_R16G16B16A16_SFLOAT, "filter pong");
   for (int parity = 0; parity < 2; ++parity) {
     const std::string suffix = parity ? " (odd frames)" : " (even frames)";
-    surface_[parity] = make(VK_FORMAT_R32G32B32A32_UINT, ("surface" + suffix).c_str());
+    surface_[parity] = make(kSurfaceFormat, ("surface" + suffix).c_str());
     history_[parity] = make(VK_FORMAT_R32G32B32A32_SFLOAT, ("history" + suffix).c_str());
     moments_[parity] = make(VK_FORMAT_R16G16B16A16_SFLOAT, ("moments" + suffix).c_str());
   }
@@ -142,11 +152,9 @@ Denoiser::~Denoiser() {
 std::vector<std::pair<uint32_t, VkImageView>> Denoiser::bindings(uint32_t parity) const {
   const uint32_t current = parity & 1u, previous = current ^ 1u;
   return {
-      {BINDING_SOFT_LIGHT, softLight_->view()},
       {BINDING_VISIBILITY_RAW, visibilityRaw_->view()},
       {BINDING_SURFACE, surface_[current]->view()},
       {BINDING_SURFACE_PREVIOUS, surface_[previous]->view()},
-      {BINDING_MOTION, motion_->view()},
       {BINDING_HISTORY, history_[previous]->view()},
       {BINDING_HISTORY_NEXT, history_[current]->view()},
       {BINDING_MOMENTS, moments_[previous]->view()},
@@ -212,29 +220,68 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
 }
 
 std::vector<std::pair<uint32_t, const Buffer*>> Denoiser::bufferBindings() const {
-  return {{BINDING_FILTER_TILE_LIST, &filterTileList_}};
+  return {
+      {BINDING_SOFT_LIGHT, &softLight_},
+      {BINDING_MOTION, &motion_},
+      {BINDING_VISIBILITY_WRITTEN, &visibilityWritten_},
+      {BINDING_SURFACE_WRITTEN, &surfaceWritten_},
+      {BINDING_FILTER_TILE_LIST, &filterTileList_},
+  };
+}
+
+void Denoiser::recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
+                                 uint32_t height) const {
+  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
+                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  const std::array<std::pair<const Buffer*, VkImage>, 2> copies = {{
+      {&visibilityWritten_, visibilityRaw_->image()},
+      {&surfaceWritten_, surface_[parity & 1u]->image()},
+  }};
+  constexpr VkPipelineStageFlags kReaders =
+      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
+  VkBufferImageCopy region{};
+  region.bufferRowLength = width_;  // the buffers' rows are the render size's
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {width, height, 1};
+  for (const auto& [written, image] : copies) {
+    // After the earlier reads of the image (the frames before are ordered by the renderer's
+    // barrier at the frame's start); back to GENERAL, where the passes read it.
+    imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kReaders, 0,
+                       VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdCopyBufferToImage(commands, written->handle(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           1, &region);
+    imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                       VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                       VK_ACCESS_TRANSFER_WRITE_BIT, kReaders, VK_ACCESS_SHADER_READ_BIT);
+  }
 }
 
 const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
                                        uint32_t iterations) const {
   switch (which) {
-    case DenoiserImage::RawVisibility:
-      return *visibilityRaw_;
     case DenoiserImage::Denoised:
       return iterations % 2 == 0 ? *filterA_ : *filterB_;
     case DenoiserImage::Moments:
       return *moments_[parity & 1u];
-    case DenoiserImage::SoftLight:
-      return *softLight_;
     case DenoiserImage::History:
       return *history_[parity & 1u];
+    case DenoiserImage::RawVisibility:
+      return *visibilityRaw_;
+    case DenoiserImage::SoftLight:  // a buffer: read() reads it
+      break;
   }
   return *filterA_;
 }
 
 std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
                                       uint32_t iterations) const {
-  const bool halfFloats = which != DenoiserImage::SoftLight && which != DenoiserImage::History;
+  if (which == DenoiserImage::SoftLight) {
+    std::vector<glm::vec4> texels(size_t(width_) * height_);
+    readDeviceBuffer(context_, softLight_, texels.data());
+    return texels;
+  }
+  const bool halfFloats = which != DenoiserImage::History;
   std::vector<glm::vec4> texels =
       readTexels(context_, imageFor(which, parity, iterations), halfFloats);
   if (which == DenoiserImage::Moments) {

@@ -51,6 +51,11 @@ class Denoiser {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   // Storage buffers by binding (the same for both parities).
   std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
+  // Copies what ray-gen wrote of the raw visibility and the surface (top-left width x height, the
+  // picture) into the images the passes read, those of frame parity `parity`; after ray-gen,
+  // before the passes.
+  void recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
+                         uint32_t height) const;
 
   // `reads`: Auto picks the shared-memory tile on GPUs and per-pixel reads on CPU drivers.
   // `greyVisibility`: the soft lights' visibility has no colour (no glass on a shadow ray's way).
@@ -75,12 +80,18 @@ class Denoiser {
                          const glm::vec4& moments) const;
 
  private:
+  // The image that holds `which` (RawVisibility and SoftLight are buffers: not these).
   const StorageImage& imageFor(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
 
   const Context& context_;
   uint32_t width_, height_;
   uint32_t groupSize_;  // kGpuGroupSize or kCpuGroupSize
-  std::unique_ptr<StorageImage> softLight_, visibilityRaw_, motion_, filterA_, filterB_;
+  static constexpr VkFormat kVisibilityFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+  static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32G32B32A32_UINT;
+  // Ray-gen's, a value per pixel (shaders/frame_bindings.glsl); the raw visibility and the
+  // surface in the images' formats.
+  Buffer softLight_, motion_, visibilityWritten_, surfaceWritten_;
+  std::unique_ptr<StorageImage> visibilityRaw_, filterA_, filterB_;
   // One texel per work-group: the stamp of the last frame that left it something to filter;
   // and this frame's list of those work-groups, the a-trous iterations' indirect dispatch.
   std::unique_ptr<StorageImage> filterTiles_;

@@ -5,7 +5,7 @@
 #include "shaders/shared_types.h"
 
 namespace render::gpu {
-static_assert(sizeof(FrameUniforms) == 19 * 16, "FrameUniforms must match the GLSL block");
+static_assert(sizeof(FrameUniforms) == 20 * 16, "FrameUniforms must match the GLSL block");
 static_assert(offsetof(FrameUniforms, sizeFrameLights) == 7 * 16);
 static_assert(offsetof(FrameUniforms, topLevels) == 18 * 16);
 static_assert(sizeof(GpuInstance) == 64);

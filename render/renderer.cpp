@@ -673,24 +673,9 @@ void Renderer::writeLightMotion(bool fullFrame) {
   lightHistoryPositions_ = lightPositions_;
 }
 
-void Renderer::readRayGenOutput(const Buffer& output, void* into) const {
-  Buffer staging(context_, output.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
-                 "ray-gen output readback");
-  context_.submitAndWait([&](VkCommandBuffer commands) {
-    memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
-                  VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_READ_BIT);
-    const VkBufferCopy copy{0, 0, output.size()};
-    vkCmdCopyBuffer(commands, output.handle(), staging.handle(), 1, &copy);
-    memoryBarrier(commands, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
-                  VK_PIPELINE_STAGE_HOST_BIT, VK_ACCESS_HOST_READ_BIT);
-  });
-  staging.read(into, output.size());
-}
-
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
   std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
-  readRayGenOutput(paths_, result.data());
+  readDeviceBuffer(context_, paths_, result.data());
   return result;
 }
 
@@ -896,6 +881,7 @@ void Renderer::writeFrameUniforms(const scene::FrameDesc& frame, bool probeOnly)
   uniforms.exposureTonemap = glm::vec4(frame.exposure, static_cast<float>(frame.tonemap),
                                        static_cast<float>(std::max(options_.rowGroups, 1u)), 0.0f);
   uniforms.mirrorBounces = glm::uvec4(mirrorBounces_, 0u, 0u, 0u);
+  uniforms.pixelBuffers = glm::uvec4(options_.width, options_.height, 0u, 0u);
   const VkDeviceAddress sceneLevel = topLevel_->structure().address();
   const VkDeviceAddress eyeLevel = eyeLevel_ ? eyeLevel_->structure().address() : sceneLevel;
   uniforms.topLevels = glm::uvec4(uint32_t(sceneLevel), uint32_t(sceneLevel >> 32),
@@ -1024,6 +1010,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
   stamp(1);
   if (denoiser_ && !probeOnly) {
+    denoiser_->recordInputCopies(commands, parity_, pictureWidth_, pictureHeight_);
     denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_,
                       pictureWidth_, pictureHeight_, stillView_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -1095,7 +1082,7 @@ std::vector<glm::vec4> Renderer::readDenoiser(DenoiserImage which) const {
 
 std::vector<glm::vec4> Renderer::readRadiance() const {
   std::vector<glm::vec4> result(size_t(options_.width) * options_.height);
-  readRayGenOutput(radiance_, result.data());
+  readDeviceBuffer(context_, radiance_, result.data());
   return result;
 }
 

@@ -192,8 +192,6 @@ class Renderer {
  private:
   void destroyHandles();  // what the destructor does, also for a constructor that throws
   void createDescriptors();
-  // Copies `output`, a buffer ray-gen writes, whole into `into` (waits).
-  void readRayGenOutput(const Buffer& output, void* into) const;
   void createPipelines(ShaderCompiler& compiler, const PipelineFeatures& features,
                        bool exposureProbes);
   void moveRenderOrigin(const glm::dvec3& origin);

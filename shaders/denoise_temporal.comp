@@ -257,7 +257,7 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   float historyLength = 0.0;
   float historyCap = MAX_HISTORY_LENGTH;
   float currentFrames = 1.0;
-  vec3 motion = unpackMotion(imageLoad(motionImage, pixel).xy);
+  vec3 motion = unpackMotion(motions[pixelIndex(pixel)]);
   if (!reset && motion.z >= 0.0) {
 #if STILL_VIEW
     vec4 ownHistory = imageLoad(historyImage, pixel);  // the estimate and its length

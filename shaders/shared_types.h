@@ -26,12 +26,19 @@ using uint = uint32_t;
 #define BINDING_TEXTURES 10
 #define BINDING_PATHS 11
 // Soft shadows: what ray-gen writes for the denoiser, and the denoiser's own images.
-#define BINDING_SOFT_LIGHT 12      // rgba32f: unshadowed light of the sampled (soft) lights
+// A storage buffer of vec4 (frame_bindings.glsl's pixelIndex): unshadowed light of the sampled
+// (soft) lights
+#define BINDING_SOFT_LIGHT 12
 #define BINDING_VISIBILITY_RAW 13  // rgba16f: this frame's visibility estimate
+// Ray-gen writes the raw visibility (four half floats) and the surface (uvec4) to storage buffers,
+// which the renderer copies into the images at BINDING_VISIBILITY_RAW and BINDING_SURFACE.
+#define BINDING_VISIBILITY_WRITTEN 38
+#define BINDING_SURFACE_WRITTEN 39
 // rgba32ui: packed world normal, distance from the camera (< 0: sky), instance + 1 (0: sky)
 #define BINDING_SURFACE 14
 #define BINDING_SURFACE_PREVIOUS 15
-#define BINDING_MOTION 18        // rgba32f: previous pixel position xy, expected distance z
+// A storage buffer of uvec2 (packMotion): previous pixel position xy, expected distance z
+#define BINDING_MOTION 18
 #define BINDING_HISTORY 19       // rgba32f: rgb visibility history (previous frame)
 #define BINDING_MOMENTS 20       // rgba32f: luminance moments x, y; history length z (prev.)
 #define BINDING_MOMENTS_NEXT 21  // this frame's moments
@@ -176,6 +183,10 @@ struct FrameUniforms {
   // scene's, zw the one camera rays trace (every instance but the player's body; xy again when
   // there is no such structure: no body, or nothing but the body)
   uvec4 topLevels;
+  // xy: the width and height of the storage buffers that hold a value per pixel (ray-gen's
+  // outputs), the render size's: pixel (x, y) is element y * width + x whatever the picture's
+  // size this frame (pixelIndex in frame_bindings.glsl)
+  uvec4 pixelBuffers;
 };
 
 // GpuInstance.geometry.z with this bit: the rest is where the instance's triangles' materials

@@ -22,7 +22,7 @@ layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer LightBlock { G
 // The tonemap's output at the render size.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform readonly image2D currentImage;
 // Ray-gen's motion: where each sample's point was in the previous frame (ray-gen's
-// writeUpscaleMotion says what it holds for a reflection), a row of render pixels after another.
+// writeUpscaleMotion says what it holds for a reflection), a value per render pixel (loadMotion).
 layout(set = 0, binding = BINDING_UPSCALE_MOTION, std430) readonly buffer UpscaleMotionBlock {
   vec4 upscaleMotion[];
 };
@@ -111,9 +111,10 @@ const float kSameSurfaceDepth = 0.3;
 
 #include "view_motion.glsl"
 
-// Ray-gen's motion for the sample at render pixel `at` (on the picture).
+// Ray-gen's motion for the sample at render pixel `at` (on the picture), element y * width + x
+// of the buffer whose rows are the render size's (frame_bindings.glsl's pixelIndex).
 vec4 loadMotion(ivec2 at) {
-  return upscaleMotion[at.y * int(frame.sizeFrameLights.x) + at.x];
+  return upscaleMotion[at.y * int(frame.pixelBuffers.x) + at.x];
 }
 
 #if HAS_MIRRORS

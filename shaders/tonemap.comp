@@ -50,10 +50,10 @@ vec3 visibilityAtRay(ivec2 pixel) {
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (pixel.x >= int(frame.sizeFrameLights.x) || pixel.y >= int(frame.sizeFrameLights.y)) return;
-  vec4 traced = tracedRadiance[pixel.y * int(frame.sizeFrameLights.x) + pixel.x];
+  vec4 traced = tracedRadiance[pixelIndex(pixel)];
   vec3 radiance = traced.rgb;
 #if SOFT_SHADOWS
-  radiance += imageLoad(softLightImage, pixel).rgb * visibilityAtRay(pixel);
+  radiance += softLights[pixelIndex(pixel)].rgb * visibilityAtRay(pixel);
 #endif
   radiance *= frame.exposureTonemap.x;
   // Saturate, never overflow: both curves are flat at 1 long before 1e4 (ACES from 7.3), and
