@@ -90,7 +90,8 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
     : context_(context),
       width_(width),
       height_(height),
-      groupSize_(context.isCpuDevice() ? kCpuGroupSize : kGpuGroupSize) {
+      groupSize_(context.isCpuDevice() ? kCpuGroupSize : kGpuGroupSize),
+      copiesInputs_(context.isCpuDevice()) {
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
@@ -103,10 +104,12 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   // Full floats: unshadowed light of a bright lamp passes half float's 65504 (then Inf, and
   // Inf times a visibility of 0 is NaN).
   softLight_ = makePixelBuffer(sizeof(glm::vec4), "soft light");
-  // The raw visibility and the surface, which the passes read many times a pixel, are copied
-  // into images (recordInputCopies).
-  visibilityWritten_ = makePixelBuffer(sizeof(uint64_t), "raw visibility written");
-  surfaceWritten_ = makePixelBuffer(sizeof(glm::uvec4), "surface written");
+  // On CPU drivers ray-gen writes the raw visibility and the surface to buffers, copied into
+  // the images the passes read (recordInputCopies); elsewhere it stores to the images.
+  if (copiesInputs_) {
+    visibilityWritten_ = makePixelBuffer(sizeof(uint64_t), "raw visibility written");
+    surfaceWritten_ = makePixelBuffer(sizeof(glm::uvec4), "surface written");
+  }
   visibilityRaw_ = make(kVisibilityFormat, "raw visibility");
   // On GPUs the passes are limited by memory traffic, so what tolerates fewer bits has them
   // (docs/PERFORMANCE.md, session 12). The motion (an offset of a few pixels in half floats and
@@ -220,13 +223,16 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
 }
 
 std::vector<std::pair<uint32_t, const Buffer*>> Denoiser::bufferBindings() const {
-  return {
+  std::vector<std::pair<uint32_t, const Buffer*>> buffers = {
       {BINDING_SOFT_LIGHT, &softLight_},
       {BINDING_MOTION, &motion_},
-      {BINDING_VISIBILITY_WRITTEN, &visibilityWritten_},
-      {BINDING_SURFACE_WRITTEN, &surfaceWritten_},
       {BINDING_FILTER_TILE_LIST, &filterTileList_},
   };
+  if (copiesInputs_) {
+    buffers.push_back({BINDING_VISIBILITY_WRITTEN, &visibilityWritten_});
+    buffers.push_back({BINDING_SURFACE_WRITTEN, &surfaceWritten_});
+  }
+  return buffers;
 }
 
 void Denoiser::recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,

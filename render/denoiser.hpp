@@ -51,6 +51,10 @@ class Denoiser {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   // Storage buffers by binding (the same for both parities).
   std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
+  // Whether ray-gen writes the raw visibility and the surface to buffers that recordInputCopies
+  // copies into the images the passes read (CPU drivers; shaders/frame_bindings.glsl says why),
+  // rather than to the images (DENOISER_INPUT_COPIES).
+  bool copiesInputs() const { return copiesInputs_; }
   // Copies what ray-gen wrote of the raw visibility and the surface (top-left width x height, the
   // picture) into the images the passes read, those of frame parity `parity`; after ray-gen,
   // before the passes.
@@ -86,10 +90,11 @@ class Denoiser {
   const Context& context_;
   uint32_t width_, height_;
   uint32_t groupSize_;  // kGpuGroupSize or kCpuGroupSize
+  bool copiesInputs_;   // copiesInputs()
   static constexpr VkFormat kVisibilityFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32G32B32A32_UINT;
   // Ray-gen's, a value per pixel (shaders/frame_bindings.glsl); the raw visibility and the
-  // surface in the images' formats.
+  // surface in the images' formats, where copiesInputs().
   Buffer softLight_, motion_, visibilityWritten_, surfaceWritten_;
   std::unique_ptr<StorageImage> visibilityRaw_, filterA_, filterB_;
   // One texel per work-group: the stamp of the last frame that left it something to filter;

@@ -17,20 +17,27 @@ layout(set = 0, binding = BINDING_RADIANCE, std430) buffer RadianceBlock {
 // passes are limited by memory traffic, so what tolerates fewer bits has them (the formats are
 // explained in render/denoiser.cpp).
 const float HALF_FLOAT_MAX = 65504.0;
-// Ray-gen's, a value per pixel (pixelIndex): the unshadowed light of the soft lights (rgb) and
-// the motion (packMotion), each read once; and the raw visibility (rgb) and penumbra width (a) as
-// four half floats (packHalf2x16), and the surface (packSurface) in xy with its instance + 1 (0:
-// sky) in z, which the renderer copies into the images below: the denoiser's passes read those
-// many times a pixel, and lavapipe reads an image faster than a buffer (02 Penumbra at 320x180:
-// the denoiser 6.6 ms reading images, 7.9 reading buffers).
+// Ray-gen's, a value per pixel (pixelIndex), each read once: the unshadowed light of the soft
+// lights (rgb) and the motion (packMotion).
 layout(set = 0, binding = BINDING_SOFT_LIGHT, std430) buffer SoftLightBlock { vec4 softLights[]; };
 layout(set = 0, binding = BINDING_MOTION, std430) buffer MotionBlock { uvec2 motions[]; };
+// DENOISER_INPUT_COPIES 1 (CPU drivers): ray-gen writes the raw visibility (rgb) and penumbra
+// width (a) as four half floats (packHalf2x16), and the surface (packSurface) in xy with its
+// instance + 1 (0: sky) in z, to these buffers, and the renderer copies them into the images
+// below: the passes read those many times a pixel, and lavapipe reads an image faster than a
+// buffer (02 Penumbra at 320x180: the denoiser 6.6 ms reading images, 7.9 reading buffers).
+// Elsewhere ray-gen stores to the images (on the H200 at 3840x2160 the copies cost 2.1 ms).
+#ifndef DENOISER_INPUT_COPIES
+#define DENOISER_INPUT_COPIES 0
+#endif
+#if DENOISER_INPUT_COPIES
 layout(set = 0, binding = BINDING_VISIBILITY_WRITTEN, std430) buffer VisibilityWrittenBlock {
   uvec2 writtenVisibilities[];
 };
 layout(set = 0, binding = BINDING_SURFACE_WRITTEN, std430) buffer SurfaceWrittenBlock {
   uvec4 writtenSurfaces[];
 };
+#endif
 layout(set = 0, binding = BINDING_VISIBILITY_RAW, rgba16f) uniform image2D visibilityRawImage;
 // The surface in xy and its instance + 1 (0: sky) in z: one read for both.
 layout(set = 0, binding = BINDING_SURFACE, rgba32ui) uniform uimage2D surfaceImage;
