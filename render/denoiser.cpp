@@ -91,7 +91,7 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
       width_(width),
       height_(height),
       groupSize_(context.isCpuDevice() ? kCpuGroupSize : kGpuGroupSize),
-      copiesInputs_(context.isCpuDevice()) {
+      writesThroughBuffers_(context.isCpuDevice()) {
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
@@ -104,11 +104,14 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   // Full floats: unshadowed light of a bright lamp passes half float's 65504 (then Inf, and
   // Inf times a visibility of 0 is NaN).
   softLight_ = makePixelBuffer(sizeof(glm::vec4), "soft light");
-  // On CPU drivers ray-gen writes the raw visibility and the surface to buffers, copied into
-  // the images the passes read (recordInputCopies); elsewhere it stores to the images.
-  if (copiesInputs_) {
+  // On CPU drivers ray-gen writes the raw visibility and the surface, and the temporal pass the
+  // next moments and history, to buffers copied into the images their readers read;
+  // elsewhere the shaders store to the images.
+  if (writesThroughBuffers_) {
     visibilityWritten_ = makePixelBuffer(sizeof(uint64_t), "raw visibility written");
     surfaceWritten_ = makePixelBuffer(sizeof(glm::uvec4), "surface written");
+    momentsWritten_ = makePixelBuffer(sizeof(uint64_t), "moments written");
+    historyWritten_ = makePixelBuffer(sizeof(glm::vec4), "history written");
   }
   visibilityRaw_ = make(kVisibilityFormat, "raw visibility");
   // On GPUs the passes are limited by memory traffic, so what tolerates fewer bits has them
@@ -177,10 +180,12 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
     temporal_[stillView] = createComputePipeline(
         context_, layout,
         compiler
-            .compile("denoise_temporal.comp", {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
-                                               {"DENOISER_GROUP_SIZE", group},
-                                               {"GREY_VISIBILITY", greyVisibility ? "1" : "0"},
-                                               {"STILL_VIEW", stillView ? "1" : "0"}})
+            .compile("denoise_temporal.comp",
+                     {{"NEIGHBOURHOOD_TILE", tile ? "1" : "0"},
+                      {"DENOISER_GROUP_SIZE", group},
+                      {"GREY_VISIBILITY", greyVisibility ? "1" : "0"},
+                      {"STILL_VIEW", stillView ? "1" : "0"},
+                      {"BUFFERED_IMAGE_WRITES", writesThroughBuffers_ ? "1" : "0"}})
             .spirv,
         stillView ? "denoise temporal, still view" : "denoise temporal");
   }
@@ -191,7 +196,8 @@ void Denoiser::createPipelines(ShaderCompiler& compiler, VkPipelineLayout layout
 }
 
 void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-                      uint32_t iterations, uint32_t width, uint32_t height, bool stillView) {
+                      uint32_t parity, uint32_t iterations, uint32_t width, uint32_t height,
+                      bool stillView) {
   // The temporal pass lists the work-groups with something to filter, from an empty list.
   memoryBarrier(commands,
                 VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0,
@@ -211,6 +217,18 @@ void Denoiser::record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescr
       commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
       VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
       VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+  if (writesThroughBuffers_) {
+    // The next moments and history into their images, which the a-trous iterations read (and
+    // the first may overwrite) and the next frame reprojects.
+    const uint32_t current = parity & 1u;
+    recordCopies(
+        commands,
+        {{&momentsWritten_, moments_[current]->image()},
+         {&historyWritten_, history_[current]->image()}},
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+        VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, width,
+        height);
+  }
   vkCmdBindPipeline(commands, VK_PIPELINE_BIND_POINT_COMPUTE, atrous_);
   for (uint32_t i = 0; i < iterations; ++i) {
     if (i > 0) computeBarrier(commands);
@@ -228,39 +246,48 @@ std::vector<std::pair<uint32_t, const Buffer*>> Denoiser::bufferBindings() const
       {BINDING_MOTION, &motion_},
       {BINDING_FILTER_TILE_LIST, &filterTileList_},
   };
-  if (copiesInputs_) {
+  if (writesThroughBuffers_) {
     buffers.push_back({BINDING_VISIBILITY_WRITTEN, &visibilityWritten_});
     buffers.push_back({BINDING_SURFACE_WRITTEN, &surfaceWritten_});
+    buffers.push_back({BINDING_MOMENTS_WRITTEN, &momentsWritten_});
+    buffers.push_back({BINDING_HISTORY_WRITTEN, &historyWritten_});
   }
   return buffers;
 }
 
-void Denoiser::recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
-                                 uint32_t height) const {
-  memoryBarrier(commands, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR, VK_ACCESS_SHADER_WRITE_BIT,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
-  const std::array<std::pair<const Buffer*, VkImage>, 2> copies = {{
-      {&visibilityWritten_, visibilityRaw_->image()},
-      {&surfaceWritten_, surface_[parity & 1u]->image()},
-  }};
-  constexpr VkPipelineStageFlags kReaders =
-      VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
+void Denoiser::recordCopies(VkCommandBuffer commands,
+                            std::initializer_list<std::pair<const Buffer*, VkImage>> copies,
+                            VkPipelineStageFlags writers, VkPipelineStageFlags readers,
+                            uint32_t width, uint32_t height) const {
+  memoryBarrier(commands, writers, VK_ACCESS_SHADER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                VK_ACCESS_TRANSFER_READ_BIT);
   VkBufferImageCopy region{};
   region.bufferRowLength = width_;  // the buffers' rows are the render size's
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {width, height, 1};
   for (const auto& [written, image] : copies) {
     // After the earlier reads of the image (the frames before are ordered by the renderer's
-    // barrier at the frame's start); back to GENERAL, where the passes read it.
+    // barrier at the frame's start); back to GENERAL, where the shaders read it.
     imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_GENERAL,
-                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, kReaders, 0,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, readers, 0,
                        VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdCopyBufferToImage(commands, written->handle(), image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            1, &region);
     imageLayoutBarrier(commands, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                        VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                       VK_ACCESS_TRANSFER_WRITE_BIT, kReaders, VK_ACCESS_SHADER_READ_BIT);
+                       VK_ACCESS_TRANSFER_WRITE_BIT, readers,
+                       VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
   }
+}
+
+void Denoiser::recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
+                                 uint32_t height) const {
+  recordCopies(commands,
+               {{&visibilityWritten_, visibilityRaw_->image()},
+                {&surfaceWritten_, surface_[parity & 1u]->image()}},
+               VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR,
+               width, height);
 }
 
 const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,

@@ -51,13 +51,14 @@ class Denoiser {
   std::vector<std::pair<uint32_t, VkImageView>> bindings(uint32_t parity) const;
   // Storage buffers by binding (the same for both parities).
   std::vector<std::pair<uint32_t, const Buffer*>> bufferBindings() const;
-  // Whether ray-gen writes the raw visibility and the surface to buffers that recordInputCopies
-  // copies into the images the passes read (CPU drivers; shaders/frame_bindings.glsl says why),
-  // rather than to the images (DENOISER_INPUT_COPIES).
-  bool copiesInputs() const { return copiesInputs_; }
+  // Whether ray-gen (the raw visibility and the surface) and the temporal pass (the next moments
+  // and history) write to buffers that are copied into the images their readers read (CPU
+  // drivers; shaders/frame_bindings.glsl says why), rather than to the images
+  // (BUFFERED_IMAGE_WRITES).
+  bool writesThroughBuffers() const { return writesThroughBuffers_; }
   // Copies what ray-gen wrote of the raw visibility and the surface (top-left width x height, the
   // picture) into the images the passes read, those of frame parity `parity`; after ray-gen,
-  // before the passes.
+  // before the passes. Only where writesThroughBuffers().
   void recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
                          uint32_t height) const;
 
@@ -72,8 +73,10 @@ class Denoiser {
   // `stillView`: the camera, the picture's size and every instance are as in the last full frame
   // (and this is neither a reset nor a reference accumulation); the temporal pass compiled for
   // that reads each pixel's own history.
+  // `parity`: the frame parity of `set`.
   void record(VkCommandBuffer commands, VkPipelineLayout layout, VkDescriptorSet set,
-              uint32_t iterations, uint32_t width, uint32_t height, bool stillView);
+              uint32_t parity, uint32_t iterations, uint32_t width, uint32_t height,
+              bool stillView);
 
   // Test and debugging hooks (they submit and wait).
   std::vector<glm::vec4> read(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
@@ -84,18 +87,25 @@ class Denoiser {
                          const glm::vec4& moments) const;
 
  private:
+  // Copies each buffer of `copies` (rows of width_ pixels) into its image's top-left width x
+  // height, after `writers` and before `readers` (the images stay in GENERAL).
+  void recordCopies(VkCommandBuffer commands,
+                    std::initializer_list<std::pair<const Buffer*, VkImage>> copies,
+                    VkPipelineStageFlags writers, VkPipelineStageFlags readers, uint32_t width,
+                    uint32_t height) const;
   // The image that holds `which` (RawVisibility and SoftLight are buffers: not these).
   const StorageImage& imageFor(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
 
   const Context& context_;
   uint32_t width_, height_;
-  uint32_t groupSize_;  // kGpuGroupSize or kCpuGroupSize
-  bool copiesInputs_;   // copiesInputs()
+  uint32_t groupSize_;         // kGpuGroupSize or kCpuGroupSize
+  bool writesThroughBuffers_;  // writesThroughBuffers()
   static constexpr VkFormat kVisibilityFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
   static constexpr VkFormat kSurfaceFormat = VK_FORMAT_R32G32B32A32_UINT;
-  // Ray-gen's, a value per pixel (shaders/frame_bindings.glsl); the raw visibility and the
-  // surface in the images' formats, where copiesInputs().
-  Buffer softLight_, motion_, visibilityWritten_, surfaceWritten_;
+  // Ray-gen's, a value per pixel (shaders/frame_bindings.glsl); where writesThroughBuffers(), the
+  // raw visibility, the surface, the next moments and history in their images' formats.
+  Buffer softLight_, motion_;
+  Buffer visibilityWritten_, surfaceWritten_, momentsWritten_, historyWritten_;
   std::unique_ptr<StorageImage> visibilityRaw_, filterA_, filterB_;
   // One texel per work-group: the stamp of the last frame that left it something to filter;
   // and this frame's list of those work-groups, the a-trous iterations' indirect dispatch.

@@ -587,7 +587,7 @@ void Renderer::createPipelines(ShaderCompiler& compiler, const PipelineFeatures&
   pipelineDescription_.defines.push_back({"SUBGROUP_COUNTERS", subgroupCounters ? "1" : "0"});
   pipelineDescription_.defines.push_back({"TEMPORAL_UPSCALE", upscaler_ ? "1" : "0"});
   pipelineDescription_.defines.push_back(
-      {"DENOISER_INPUT_COPIES", denoiser_ && denoiser_->copiesInputs() ? "1" : "0"});
+      {"BUFFERED_IMAGE_WRITES", denoiser_ && denoiser_->writesThroughBuffers() ? "1" : "0"});
   const ShaderDefines& defines = pipelineDescription_.defines;
   auto load = [&](const std::string& file) {
     return ShaderCode{file, compiler.compile(file, defines).spirv};
@@ -1012,9 +1012,9 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
   stamp(1);
   if (denoiser_ && !probeOnly) {
-    if (denoiser_->copiesInputs())
+    if (denoiser_->writesThroughBuffers())
       denoiser_->recordInputCopies(commands, parity_, pictureWidth_, pictureHeight_);
-    denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], lastIterations_,
+    denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_, lastIterations_,
                       pictureWidth_, pictureHeight_, stillView_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
                   VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);

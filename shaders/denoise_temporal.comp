@@ -162,6 +162,19 @@ Neighbourhood rowNeighbourhood(ivec2 centre, bool inside) {
 }
 #endif
 
+// The next frame's moments and history at `pixel` (BUFFERED_IMAGE_WRITES: to the buffers the
+// renderer copies into their images, frame_bindings.glsl).
+void storeNext(ivec2 pixel, vec4 moments, vec4 history) {
+#if BUFFERED_IMAGE_WRITES
+  int index = pixelIndex(pixel);
+  writtenMoments[index] = uvec2(packHalf2x16(moments.xy), packHalf2x16(moments.zw));
+  writtenHistories[index] = history;
+#else
+  imageStore(momentsNextImage, pixel, moments);
+  imageStore(historyNextImage, pixel, history);
+#endif
+}
+
 // A pixel whose path met no surface (the sky, seen directly or in a mirror) has nothing to
 // denoise: it keeps this frame's sample, without variance, and its neighbourhood is not read
 // (on lavapipe a pixel's image reads are most of this pass; 06 Night Watch is half sky). The
@@ -173,9 +186,8 @@ void keepWithoutSurface(ivec2 pixel, vec3 current) {
   imageStore(filterAImage, pixel, filterInput);
   imageStore(filterBImage, pixel, filterInput);
   float currentLuminance = luminance(current);
-  imageStore(momentsNextImage, pixel,
-             vec4(currentLuminance, currentLuminance * currentLuminance, 1.0, -1.0));
-  imageStore(historyNextImage, pixel, vec4(current, 1.0));
+  storeNext(pixel, vec4(currentLuminance, currentLuminance * currentLuminance, 1.0, -1.0),
+            vec4(current, 1.0));
 }
 
 #if !STILL_VIEW
@@ -374,8 +386,8 @@ bool integrate(ivec2 pixel, vec3 current, uvec4 packedSurface, Neighbourhood n) 
   if (filterVariance < UNFILTERED_VARIANCE_BOUND) imageStore(filterBImage, pixel, filterInput);
   // The moments' length (half floats) serves the a-trous passes' test for a young history; the
   // next frame counts on the history's own, in full floats.
-  imageStore(momentsNextImage, pixel, vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra));
-  imageStore(historyNextImage, pixel, vec4(integrated, historyLength));
+  storeNext(pixel, vec4(moments, min(historyLength, HALF_FLOAT_MAX), penumbra),
+            vec4(integrated, historyLength));
   // NaN counts as variance: the a-trous iterations store such a pixel.
   return filterVariance != 0.0;
 }

@@ -21,21 +21,29 @@ const float HALF_FLOAT_MAX = 65504.0;
 // lights (rgb) and the motion (packMotion).
 layout(set = 0, binding = BINDING_SOFT_LIGHT, std430) buffer SoftLightBlock { vec4 softLights[]; };
 layout(set = 0, binding = BINDING_MOTION, std430) buffer MotionBlock { uvec2 motions[]; };
-// DENOISER_INPUT_COPIES 1 (CPU drivers): ray-gen writes the raw visibility (rgb) and penumbra
+// BUFFERED_IMAGE_WRITES 1 (CPU drivers): ray-gen writes the raw visibility (rgb) and penumbra
 // width (a) as four half floats (packHalf2x16), and the surface (packSurface) in xy with its
-// instance + 1 (0: sky) in z, to these buffers, and the renderer copies them into the images
-// below: the passes read those many times a pixel, and lavapipe reads an image faster than a
-// buffer (02 Penumbra at 320x180: the denoiser 6.6 ms reading images, 7.9 reading buffers).
-// Elsewhere ray-gen stores to the images (on the H200 at 3840x2160 the copies cost 2.1 ms).
-#ifndef DENOISER_INPUT_COPIES
-#define DENOISER_INPUT_COPIES 0
+// instance + 1 (0: sky) in z, and the temporal pass writes the next moments (four half floats)
+// and history, to these buffers, and the renderer copies them into the images below: their
+// readers read them many times a pixel, and lavapipe reads an image faster than a buffer (02
+// Penumbra at 320x180: the denoiser 6.6 ms reading images, 7.9 reading buffers), where it stores
+// to an image one lane at a time. Elsewhere the shaders store to the images (on the H200 at
+// 3840x2160 ray-gen's two copies cost 2.1 ms).
+#ifndef BUFFERED_IMAGE_WRITES
+#define BUFFERED_IMAGE_WRITES 0
 #endif
-#if DENOISER_INPUT_COPIES
+#if BUFFERED_IMAGE_WRITES
 layout(set = 0, binding = BINDING_VISIBILITY_WRITTEN, std430) buffer VisibilityWrittenBlock {
   uvec2 writtenVisibilities[];
 };
 layout(set = 0, binding = BINDING_SURFACE_WRITTEN, std430) buffer SurfaceWrittenBlock {
   uvec4 writtenSurfaces[];
+};
+layout(set = 0, binding = BINDING_MOMENTS_WRITTEN, std430) buffer MomentsWrittenBlock {
+  uvec2 writtenMoments[];
+};
+layout(set = 0, binding = BINDING_HISTORY_WRITTEN, std430) buffer HistoryWrittenBlock {
+  vec4 writtenHistories[];
 };
 #endif
 layout(set = 0, binding = BINDING_VISIBILITY_RAW, rgba16f) uniform image2D visibilityRawImage;

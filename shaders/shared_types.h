@@ -34,6 +34,10 @@ using uint = uint32_t;
 // which the renderer copies into the images at BINDING_VISIBILITY_RAW and BINDING_SURFACE.
 #define BINDING_VISIBILITY_WRITTEN 38
 #define BINDING_SURFACE_WRITTEN 39
+// The same for the temporal pass's moments (four half floats) and history (vec4), copied into
+// the images at BINDING_MOMENTS_NEXT and BINDING_HISTORY_NEXT.
+#define BINDING_MOMENTS_WRITTEN 40
+#define BINDING_HISTORY_WRITTEN 41
 // rgba32ui: packed world normal, distance from the camera (< 0: sky), instance + 1 (0: sky)
 #define BINDING_SURFACE 14
 #define BINDING_SURFACE_PREVIOUS 15
