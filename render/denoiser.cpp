@@ -95,7 +95,8 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
   auto make = [&](VkFormat format, const char* name) {
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
-  // What ray-gen writes is in storage buffers, a value per pixel (frame_bindings.glsl says why).
+  // Storage buffers of a value per pixel, which ray-gen or the temporal pass writes
+  // (shaders/frame_bindings.glsl says why).
   auto makePixelBuffer = [&](VkDeviceSize bytesPerPixel, const std::string& name) {
     return Buffer(context, VkDeviceSize(width) * height * bytesPerPixel,
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
@@ -301,7 +302,7 @@ const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
       return *history_[parity & 1u];
     case DenoiserImage::RawVisibility:
       return *visibilityRaw_;
-    case DenoiserImage::SoftLight:  // a buffer: read() reads it
+    case DenoiserImage::SoftLight:  // a buffer, which read() reads
       break;
   }
   return *filterA_;

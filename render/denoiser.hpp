@@ -2,6 +2,7 @@
 // Soft-shadow denoiser: the images ray-gen fills for it, its history, and its compute passes
 // (temporal reprojection with moments, then edge-avoiding a-trous iterations).
 #include <array>
+#include <initializer_list>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -93,7 +94,7 @@ class Denoiser {
                     std::initializer_list<std::pair<const Buffer*, VkImage>> copies,
                     VkPipelineStageFlags writers, VkPipelineStageFlags readers, uint32_t width,
                     uint32_t height) const;
-  // The image that holds `which` (RawVisibility and SoftLight are buffers: not these).
+  // The image that holds `which` (not SoftLight, a buffer that read() reads).
   const StorageImage& imageFor(DenoiserImage which, uint32_t parity, uint32_t iterations) const;
 
   const Context& context_;

@@ -163,7 +163,7 @@ Neighbourhood rowNeighbourhood(ivec2 centre, bool inside) {
 #endif
 
 // The next frame's moments and history at `pixel` (BUFFERED_IMAGE_WRITES: to the buffers the
-// renderer copies into their images, frame_bindings.glsl).
+// denoiser copies into their images, frame_bindings.glsl).
 void storeNext(ivec2 pixel, vec4 moments, vec4 history) {
 #if BUFFERED_IMAGE_WRITES
   int index = pixelIndex(pixel);

@@ -1,4 +1,4 @@
-// Images and per-frame uniforms, used by the ray tracing stages and the compute passes.
+// Images, buffers and per-frame uniforms, used by the ray tracing stages and the compute passes.
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D outputImage;
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
 
@@ -24,10 +24,10 @@ layout(set = 0, binding = BINDING_MOTION, std430) buffer MotionBlock { uvec2 mot
 // BUFFERED_IMAGE_WRITES 1 (CPU drivers): ray-gen writes the raw visibility (rgb) and penumbra
 // width (a) as four half floats (packHalf2x16), and the surface (packSurface) in xy with its
 // instance + 1 (0: sky) in z, and the temporal pass writes the next moments (four half floats)
-// and history, to these buffers, and the renderer copies them into the images below: their
-// readers read them many times a pixel, and lavapipe reads an image faster than a buffer (02
-// Penumbra at 320x180: the denoiser 6.6 ms reading images, 7.9 reading buffers), where it stores
-// to an image one lane at a time. Elsewhere the shaders store to the images (on the H200 at
+// and history, to these buffers, and the denoiser copies them into the images below. lavapipe
+// stores to an image one lane at a time, but reads an image faster than a buffer, and their
+// readers read them many times a pixel (02 Penumbra at 320x180: the denoiser 6.6 ms reading the
+// images, 7.9 reading the buffers). Elsewhere the shaders store to the images (on the H200 at
 // 3840x2160 ray-gen's two copies cost 2.1 ms).
 #ifndef BUFFERED_IMAGE_WRITES
 #define BUFFERED_IMAGE_WRITES 0
