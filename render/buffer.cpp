@@ -104,7 +104,7 @@ void Buffer::read(void* data, VkDeviceSize bytes, VkDeviceSize offset) const {
   std::memcpy(data, static_cast<const char*>(mapped_) + offset, bytes);
 }
 
-void readDeviceBuffer(const Context& context, const Buffer& source, void* into) {
+void readDeviceBytes(const Context& context, const Buffer& source, void* into) {
   Buffer staging(context, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
                  "buffer readback");
   context.submitAndWait([&](VkCommandBuffer commands) {

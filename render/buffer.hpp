@@ -4,6 +4,7 @@
 #include <cstring>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <vulkan/vulkan.h>
 
@@ -53,7 +54,15 @@ class Buffer {
 
 // Copies the whole of `source`, a device buffer that shaders wrote (TRANSFER_SRC usage), into
 // `into` (source.size() bytes); submits and waits.
-void readDeviceBuffer(const Context& context, const Buffer& source, void* into);
+void readDeviceBytes(const Context& context, const Buffer& source, void* into);
+
+// The whole of `source` (as readDeviceBytes) as the values of type T it holds.
+template <typename T>
+std::vector<T> readDeviceBuffer(const Context& context, const Buffer& source) {
+  std::vector<T> values(source.size() / sizeof(T));
+  readDeviceBytes(context, source, values.data());
+  return values;
+}
 
 constexpr VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) {
   return (value + alignment - 1) / alignment * alignment;

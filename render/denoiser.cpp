@@ -283,6 +283,7 @@ void Denoiser::recordCopies(VkCommandBuffer commands,
 
 void Denoiser::recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
                                  uint32_t height) const {
+  if (!writesThroughBuffers_) return;  // ray-gen stored to the images
   recordCopies(commands,
                {{&visibilityWritten_, visibilityRaw_->image()},
                 {&surfaceWritten_, surface_[parity & 1u]->image()}},
@@ -310,11 +311,7 @@ const StorageImage& Denoiser::imageFor(DenoiserImage which, uint32_t parity,
 
 std::vector<glm::vec4> Denoiser::read(DenoiserImage which, uint32_t parity,
                                       uint32_t iterations) const {
-  if (which == DenoiserImage::SoftLight) {
-    std::vector<glm::vec4> texels(size_t(width_) * height_);
-    readDeviceBuffer(context_, softLight_, texels.data());
-    return texels;
-  }
+  if (which == DenoiserImage::SoftLight) return readDeviceBuffer<glm::vec4>(context_, softLight_);
   const bool halfFloats = which != DenoiserImage::History;
   std::vector<glm::vec4> texels =
       readTexels(context_, imageFor(which, parity, iterations), halfFloats);

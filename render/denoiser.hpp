@@ -59,7 +59,7 @@ class Denoiser {
   bool writesThroughBuffers() const { return writesThroughBuffers_; }
   // Copies what ray-gen wrote of the raw visibility and the surface (top-left width x height, the
   // picture) into the images the passes read, those of frame parity `parity`; after ray-gen,
-  // before the passes. Only where writesThroughBuffers().
+  // before the passes (nothing where not writesThroughBuffers()).
   void recordInputCopies(VkCommandBuffer commands, uint32_t parity, uint32_t width,
                          uint32_t height) const;
 

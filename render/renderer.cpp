@@ -676,9 +676,7 @@ void Renderer::writeLightMotion(bool fullFrame) {
 }
 
 std::vector<gpu::PixelPath> Renderer::pixelPaths() const {
-  std::vector<gpu::PixelPath> result(size_t(options_.width) * options_.height);
-  readDeviceBuffer(context_, paths_, result.data());
-  return result;
+  return readDeviceBuffer<gpu::PixelPath>(context_, paths_);
 }
 
 void Renderer::setProbes(const scene::ProbeRequest& request) {
@@ -1012,8 +1010,7 @@ void Renderer::recordFrame(VkCommandBuffer commands, bool readback, bool probeOn
                 VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
   stamp(1);
   if (denoiser_ && !probeOnly) {
-    if (denoiser_->writesThroughBuffers())
-      denoiser_->recordInputCopies(commands, parity_, pictureWidth_, pictureHeight_);
+    denoiser_->recordInputCopies(commands, parity_, pictureWidth_, pictureHeight_);
     denoiser_->record(commands, pipelineLayout_, descriptorSets_[parity_], parity_, lastIterations_,
                       pictureWidth_, pictureHeight_, stillView_);
     memoryBarrier(commands, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -1084,9 +1081,7 @@ std::vector<glm::vec4> Renderer::readDenoiser(DenoiserImage which) const {
 }
 
 std::vector<glm::vec4> Renderer::readRadiance() const {
-  std::vector<glm::vec4> result(size_t(options_.width) * options_.height);
-  readDeviceBuffer(context_, radiance_, result.data());
-  return result;
+  return readDeviceBuffer<glm::vec4>(context_, radiance_);
 }
 
 void Renderer::fillDenoiserHistory(const glm::vec4& history, const glm::vec4& moments) {
