@@ -104,6 +104,13 @@ void Buffer::read(void* data, VkDeviceSize bytes, VkDeviceSize offset) const {
   std::memcpy(data, static_cast<const char*>(mapped_) + offset, bytes);
 }
 
+Buffer pixelBuffer(const Context& context, uint32_t width, uint32_t height,
+                   VkDeviceSize bytesPerPixel, const std::string& name) {
+  return Buffer(context, VkDeviceSize(width) * height * bytesPerPixel,
+                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                MemoryUse::DeviceOnly, name);
+}
+
 void readDeviceBytes(const Context& context, const Buffer& source, void* into) {
   Buffer staging(context, source.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::Readback,
                  "buffer readback");

@@ -52,6 +52,12 @@ class Buffer {
   void* mapped_ = nullptr;
 };
 
+// A device-only storage buffer of `bytesPerPixel` bytes for each pixel of a width x height
+// picture, which shaders write a value per pixel to (shaders/pixel_index.glsl) and copies or
+// readDeviceBuffer read.
+Buffer pixelBuffer(const Context& context, uint32_t width, uint32_t height,
+                   VkDeviceSize bytesPerPixel, const std::string& name);
+
 // Copies the whole of `source`, a device buffer that shaders wrote (TRANSFER_SRC usage), into
 // `into` (source.size() bytes); submits and waits.
 void readDeviceBytes(const Context& context, const Buffer& source, void* into);

@@ -96,11 +96,9 @@ Denoiser::Denoiser(const Context& context, uint32_t width, uint32_t height)
     return std::make_unique<StorageImage>(context, width, height, format, kDebugUsage, name);
   };
   // Storage buffers of a value per pixel, which ray-gen or the temporal pass writes
-  // (shaders/frame_bindings.glsl says why).
+  // (shaders/pixel_index.glsl says why).
   auto makePixelBuffer = [&](VkDeviceSize bytesPerPixel, const std::string& name) {
-    return Buffer(context, VkDeviceSize(width) * height * bytesPerPixel,
-                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                  MemoryUse::DeviceOnly, name);
+    return pixelBuffer(context, width, height, bytesPerPixel, name);
   };
   // Full floats: unshadowed light of a bright lamp passes half float's 65504 (then Inf, and
   // Inf times a visibility of 0 is NaN).

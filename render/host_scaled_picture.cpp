@@ -112,7 +112,7 @@ void HostScaledPicture::readAndScale(const Renderer& renderer, uint32_t factor, 
 
   const auto* source = static_cast<const uint8_t*>(readBack_.mapped());
   auto* target = static_cast<uint8_t*>(scaledPixels_.mapped());
-  const bool swapRedBlue = format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+  const bool swapRedBlue = isBlueFirst(format);
   const size_t targetRowBytes = size_t(scaledSize_.width) * 4;
   if (factor == 2) {
     // In two bands, the lower one on a thread of its own: the driver's threads are idle until

@@ -17,6 +17,12 @@ namespace render {
 class Context;
 class Renderer;
 
+// Whether a window image of `format` (four 8-bit channels) holds each pixel blue first, where
+// the renderer's pictures are red first.
+constexpr bool isBlueFirst(VkFormat format) {
+  return format == VK_FORMAT_B8G8R8A8_UNORM || format == VK_FORMAT_B8G8R8A8_SRGB;
+}
+
 class HostScaledPicture {
  public:
   explicit HostScaledPicture(const Context& context);  // throws RenderError

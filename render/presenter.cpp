@@ -390,7 +390,7 @@ void Presenter::collectCapture() {
     image.height = extent_.height;
     image.pixels.resize(size_t(image.width) * image.height * 4);
     captureBuffer_.read(image.pixels.data(), image.pixels.size());
-    const bool bgra = format_ == VK_FORMAT_B8G8R8A8_UNORM || format_ == VK_FORMAT_B8G8R8A8_SRGB;
+    const bool bgra = isBlueFirst(format_);
     for (size_t i = 0; i < image.pixels.size(); i += 4) {
       if (bgra) std::swap(image.pixels[i], image.pixels[i + 2]);
       image.pixels[i + 3] = 255;  // the window is opaque

@@ -354,9 +354,8 @@ Renderer::Renderer(const Context& context, ShaderCompiler& compiler, const scene
   if (!seenFromEye.empty() && seenFromEye.size() < tlasInstances.size())
     eyeLevel_ = std::make_unique<TopLevelSubset>(context, tlasInstances, std::move(seenFromEye));
 
-  radiance_ = Buffer(context, VkDeviceSize(options.width) * options.height * sizeof(glm::vec4),
-                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                     MemoryUse::DeviceOnly, "linear radiance");
+  radiance_ =
+      pixelBuffer(context, options.width, options.height, sizeof(glm::vec4), "linear radiance");
   outputImage_ = std::make_unique<StorageImage>(
       context, options.width, options.height, VK_FORMAT_R8G8B8A8_UNORM,
       VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "display image");

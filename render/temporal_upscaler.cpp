@@ -66,8 +66,7 @@ TemporalUpscaler::TemporalUpscaler(const Context& context, uint32_t renderWidth,
                                 " is smaller than the render size " + std::to_string(renderWidth) +
                                 "x" + std::to_string(renderHeight));
   }
-  motion_ = Buffer(context, VkDeviceSize(renderWidth) * renderHeight * sizeof(glm::vec4),
-                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, MemoryUse::DeviceOnly, "upscale motion");
+  motion_ = pixelBuffer(context, renderWidth, renderHeight, sizeof(glm::vec4), "upscale motion");
   const VkImageUsageFlags written = attachments_ ? VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT : 0;
   display_ = std::make_unique<StorageImage>(
       context, outputWidth, outputHeight, kDisplayFormat,

@@ -2,11 +2,7 @@
 layout(set = 0, binding = BINDING_OUTPUT_IMAGE, rgba8) uniform writeonly image2D outputImage;
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
 
-// What ray-gen writes, a value per pixel, goes to storage buffers rather than images: lavapipe
-// stores to an image one lane at a time (0.6-0.7 ms of the trace a store at 320x180, against
-// 0.1-0.2 ms for a buffer's). Pixel (x, y) is element pixelIndex of each, whatever the picture's
-// size this frame.
-int pixelIndex(ivec2 pixel) { return pixel.y * int(frame.pixelBuffers.x) + pixel.x; }
+#include "pixel_index.glsl"
 
 // Ray-gen's linear radiance (rgb; alpha 0 where the sample shows something that moved).
 layout(set = 0, binding = BINDING_RADIANCE, std430) buffer RadianceBlock {

@@ -15,6 +15,7 @@
 // 3840x2160 against the compute shader's 0.22).
 
 layout(set = 0, binding = BINDING_FRAME, std140) uniform FrameBlock { FrameUniforms frame; };
+#include "pixel_index.glsl"
 layout(set = 0, binding = BINDING_INSTANCES, std430) readonly buffer InstanceBlock {
   GpuInstance instances[];
 };
@@ -111,11 +112,8 @@ const float kSameSurfaceDepth = 0.3;
 
 #include "view_motion.glsl"
 
-// Ray-gen's motion for the sample at render pixel `at` (on the picture), element y * width + x
-// of the buffer whose rows are the render size's (frame_bindings.glsl's pixelIndex).
-vec4 loadMotion(ivec2 at) {
-  return upscaleMotion[at.y * int(frame.pixelBuffers.x) + at.x];
-}
+// Ray-gen's motion for the sample at render pixel `at` (on the picture).
+vec4 loadMotion(ivec2 at) { return upscaleMotion[pixelIndex(at)]; }
 
 #if HAS_MIRRORS
 // Where the point at `distance` along the camera ray of render pixel `renderPixel` was in the
