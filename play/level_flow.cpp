@@ -94,6 +94,7 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   simulationOptions.verticalFovDegrees = setup.settings.fieldOfViewDegrees;
   played.simulation = std::make_unique<sim::Simulation>(setup.context, setup.compiler,
                                                         *played.level, simulationOptions);
+  played.simulation->preparePictures();  // no stall in the first frames played
   played.tickClock.reset();
   played.lastFrameAt = glfwGetTime();  // loading time is not play time
   played.outcomeAt = -1.0;

@@ -1102,6 +1102,54 @@ FrameStats Renderer::renderProbeFrame(const scene::FrameDesc& frame) {
   return submitFrame(frame, false, true);
 }
 
+void Renderer::runEachPicturePipelineOnce(const scene::FrameDesc& frame) {
+  if (previousUniforms_)
+    throw RenderError("runEachPicturePipelineOnce: only before the first full frame");
+  // What a full frame changes and the first one would otherwise start from.
+  const glm::uvec2 picture(pictureWidth_, pictureHeight_);
+  const glm::uvec2 shownPicture = shownPicture_;
+  const uint32_t jitterIndex = jitterIndex_;
+  const uint32_t parity = parity_;
+  const bool sceneChanged = sceneChanged_;
+  const bool unchangedSinceReset = unchangedSinceReset_;
+
+  constexpr uint32_t kFewPixels = 8;
+  pictureWidth_ = std::min(kFewPixels, options_.width);
+  pictureHeight_ = std::min(kFewPixels, options_.height);
+  lastIterations_ = std::max(denoiserIterations(frame), 1u);
+  moveRenderOrigin(glm::dvec3(frame.camera.position));
+  writeLightRoutes();
+  writeFrameUniforms(frame, false);  // a frame without history: nothing it reads matters
+  // The passes of a moving view, of a camera held still and of a steady view, each of which
+  // has pipelines of its own (the denoiser's temporal pass, the upscaler's resolve).
+  struct View {
+    bool held;
+    uint32_t steadyFrames;
+  };
+  // Each a frame of its own, submitted and waited for as frames are, ping-ponging likewise.
+  for (const View view :
+       {View{false, 0}, View{true, 0}, View{true, UPSCALE_STEADY_FRAMES_UNCLAMPED}}) {
+    viewHeld_ = view.held;
+    stillView_ = view.held && options_.stillViewDenoiser;
+    steadyFrames_ = view.steadyFrames;
+    context_.submitAndWait([&](VkCommandBuffer commands) { recordFrame(commands, false, false); });
+    parity_ ^= 1u;
+  }
+  parity_ = parity;
+
+  pictureWidth_ = picture.x;
+  pictureHeight_ = picture.y;
+  shownPicture_ = shownPicture;
+  jitterIndex_ = jitterIndex;
+  sceneChanged_ = sceneChanged;
+  unchangedSinceReset_ = unchangedSinceReset;
+  previousUniforms_.reset();
+  historyOrigin_.reset();
+  steadyFrames_ = 0;
+  viewHeld_ = false;
+  stillView_ = false;
+}
+
 FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, bool probeOnly) {
   if (!probeOnly) lastIterations_ = denoiserIterations(frame);
   moveRenderOrigin(glm::dvec3(frame.camera.position));

@@ -112,6 +112,14 @@ class Renderer {
   // No image changes, and the denoiser's history and motion stay those of the last full frame.
   FrameStats renderProbeFrame(const scene::FrameDesc& frame);
 
+  // Runs each pipeline a full frame may take once, on a picture of a few pixels, and leaves the
+  // renderer as it was: the next full frame renders what it would have. A CPU driver compiles
+  // a pipeline's machine code the first time a command buffer runs it, unless Mesa's shader
+  // cache holds it: lavapipe took 0.3-1.0 s in each of the first and third frames of a level
+  // played for the first time. Play calls this while the level loads. Only before the first
+  // full frame (throws RenderError otherwise).
+  void runEachPicturePipelineOnce(const scene::FrameDesc& frame);
+
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS,
   // unless every element is within 1e-5 (10 µm) of what it holds: so small a change is not drawn.
   void setInstanceTransforms(std::span<const glm::mat4> objectToWorld);

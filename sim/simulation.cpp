@@ -228,12 +228,23 @@ void Simulation::step(const game::TickInput& input) {
     rules_.decide(*decided, logic_.outcomeTick(), logic_.reason());
 }
 
-const std::vector<uint8_t>& Simulation::renderPicture(bool readback) {
-  syncRenderer();
+scene::FrameDesc Simulation::pictureFrame() const {
   scene::FrameDesc frame;
   frame.camera = world_.camera();
   // Sample sequences of their own, so taking a picture changes no probe frame's samples.
-  frame.frameIndex = kPictureFrames + pictureFrames_++;
+  frame.frameIndex = kPictureFrames + pictureFrames_;
+  return frame;
+}
+
+void Simulation::preparePictures() {
+  syncRenderer();
+  renderer_->runEachPicturePipelineOnce(pictureFrame());
+}
+
+const std::vector<uint8_t>& Simulation::renderPicture(bool readback) {
+  syncRenderer();
+  const scene::FrameDesc frame = pictureFrame();
+  ++pictureFrames_;
   lastPictureStats_ = renderer_->renderFrame(frame, readback);
   return renderer_->pixels();
 }

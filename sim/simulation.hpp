@@ -73,12 +73,17 @@ class Simulation {
   // unaffected. Returns RGBA8 rows top to bottom, read back unless `readback` is false (a
   // window presents the renderer's image instead).
   const std::vector<uint8_t>& renderPicture(bool readback = true);
+  // Before the first picture: has the renderer run each of the picture's pipelines once
+  // (Renderer::runEachPicturePipelineOnce), so that a CPU driver compiles them now, while the
+  // level loads, not in the first frames played. The pictures are those it would have made.
+  void preparePictures();
   // The last picture's times: each pass's on the GPU and the host's from submit to fence.
   const render::FrameStats& lastPictureStats() const { return lastPictureStats_; }
   render::Renderer& renderer() { return *renderer_; }
   const render::Renderer& renderer() const { return *renderer_; }
 
  private:
+  scene::FrameDesc pictureFrame() const;  // the next picture's camera and sample sequence
   void syncRenderer();
   void syncFeedback();
   game::ProbeReadings renderProbeFrame();

@@ -9,6 +9,7 @@
 #include "game/primitives.hpp"
 #include "render/image_metrics.hpp"
 #include "render/temporal_upscaler.hpp"
+#include "render/vulkan_error.hpp"
 #include "scene/color.hpp"
 #include "scene_builder.hpp"
 #include "vulkan_fixture.hpp"
@@ -763,6 +764,32 @@ TEST_F(TemporalUpscaleTest, a_still_camera_takes_a_pixel_around_which_nothing_mo
       EXPECT_EQ(differing, 0u) << "frame " << frame;
     }
   }
+}
+
+TEST_F(TemporalUpscaleTest, running_each_pipeline_once_first_changes_no_picture) {
+  // Play has the renderer run each pipeline once while a level loads
+  // (Renderer::runEachPicturePipelineOnce). The frames after must be those a renderer that did
+  // not gives, byte for byte: the box sliding right under a sphere light (soft shadows, so the
+  // denoiser's passes run too), then resting until the view is steady, the camera held.
+  scene::SceneDesc scene = boxScene(slidTo(0));
+  scene.lights[0].type = scene::LightType::Sphere;
+  scene.lights[0].radius = 0.3f;
+  auto prepared = upscaler(scene);
+  auto plain = upscaler(scene);
+  ASSERT_TRUE(prepared->softShadows());
+  prepared->runEachPicturePipelineOnce(frameAt(0));
+  constexpr uint32_t kSliding = 4;
+  const uint32_t frames = kSliding + UPSCALE_STEADY_FRAMES_UNCLAMPED + 3;
+  for (uint32_t frame = 0; frame < frames; ++frame) {
+    for (render::Renderer* renderer : {prepared.get(), plain.get()}) {
+      moveBox(*renderer, slidTo(std::min(frame, kSliding)));
+      renderer->renderFrame(frameAt(frame));
+    }
+    ASSERT_EQ(prepared->pixels(), plain->pixels()) << "frame " << frame;
+  }
+  EXPECT_GE(prepared->steadyFrames(), UPSCALE_STEADY_FRAMES_UNCLAMPED);
+  // After the first full frame there is a history it would disturb.
+  EXPECT_THROW(prepared->runEachPicturePipelineOnce(frameAt(frames)), render::RenderError);
 }
 
 }  // namespace
