@@ -115,9 +115,9 @@ class Renderer {
   // Runs each pipeline a full frame may take once, on a picture of a few pixels, and leaves the
   // renderer as it was: the next full frame renders what it would have. A CPU driver compiles
   // a pipeline's machine code the first time a command buffer runs it, unless Mesa's shader
-  // cache holds it: lavapipe took 0.3-1.0 s in each of the first and third frames of a level
-  // played for the first time. Play calls this while the level loads. Only before the first
-  // full frame (throws RenderError otherwise).
+  // cache holds it: lavapipe froze the first and third frames of a level played for the first
+  // time for 0.8-1.4 s each (docs/PERFORMANCE.md, session 40). Play calls this while the level
+  // loads. Only before the first full frame (throws RenderError otherwise).
   void runEachPicturePipelineOnce(const scene::FrameDesc& frame);
 
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS,
