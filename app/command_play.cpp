@@ -48,6 +48,7 @@ play::PlayOptions playOptions(const Options& options) {
   playing.fixedScale = options.fixedScale;
   playing.record = options.record;
   playing.capture = options.capture;
+  playing.captureLoading = options.captureLoading;
   playing.author = options.author;
   playing.levelLoading = levelLoadOptions();
   return playing;

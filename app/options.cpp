@@ -158,6 +158,10 @@ const std::vector<OptionSpec> kOptions{
      "with --quit-after-ticks: save the window's last image as the swapchain\nholds it "
      "(picture, HUD and text)",
      {"play"}},
+    {"--capture-loading",
+     "DIR",
+     "save the window's image while each level loads (the loading screen)\nas DIR/<level>.png",
+     {"play"}},
     {"--csv", "FILE", "also write the table as CSV", {"bench"}},
     {"--strafe",
      "",
@@ -368,6 +372,8 @@ Options parseOptions(int argc, char** argv) {
       options.windowSize = {width, height};
     } else if (argument == "--capture") {
       options.capture = value();
+    } else if (argument == "--capture-loading") {
+      options.captureLoading = value();
     } else if (argument == "--record") {
       options.record = value();
     } else if (argument == "--strafe") {

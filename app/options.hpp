@@ -57,10 +57,11 @@ struct Options {
   bool resetProgress = false;                   // play: lock every level but the first again
   bool author = false;                          // play: start with the fly camera
   std::optional<std::pair<uint32_t, uint32_t>> windowSize;  // play: --window WxH
-  std::optional<std::filesystem::path> capture;  // play: the last frame's window image (PNG)
-  std::optional<std::filesystem::path> csv;      // bench: the table as CSV
-  std::optional<std::filesystem::path> json;     // bench: the table as JSON
-  uint32_t embreeFrames = 30;                    // bench: Embree reference frames (0: none)
+  std::optional<std::filesystem::path> capture;         // play: the last frame's window image (PNG)
+  std::optional<std::filesystem::path> captureLoading;  // play: each loading screen, a PNG in it
+  std::optional<std::filesystem::path> csv;             // bench: the table as CSV
+  std::optional<std::filesystem::path> json;            // bench: the table as JSON
+  uint32_t embreeFrames = 30;                           // bench: Embree reference frames (0: none)
   bool strafe = false;  // bench: the camera strafes back and forth (a moving view's passes)
 };
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <vector>
 
 #include <GLFW/glfw3.h>
@@ -109,7 +110,8 @@ int Game::run(const fs::path& firstLevel) {
       screenshotRequested_ = false;
     if (quitting) {
       if (options_.capture &&
-          !writeCapture(presenter_, *options_.capture, played_.simulation->tick()))
+          !writeCapture(presenter_, *options_.capture,
+                        "at tick " + std::to_string(played_.simulation->tick())))
         captureFailed_ = true;
       std::printf("quit after %llu ticks, %llu frames shown (%.1f fps); frame times %s\n",
                   static_cast<unsigned long long>(ticksPlayed_),
@@ -145,8 +147,27 @@ int Game::run(const fs::path& firstLevel) {
   return captureFailed_ ? 1 : 0;
 }
 
-LevelSetup Game::levelSetup() const {
-  return {context_, compiler_, window_, options_, settings_, levels_};
+LevelSetup Game::levelSetup() {
+  return {
+      context_, compiler_, window_, options_, settings_, levels_, [this](const game::Level& level) {
+        showLoading(level);
+      }};
+}
+
+void Game::showLoading(const game::Level& level) {
+  ui_->beginFrame();
+  drawLoadingScreen(level.name, context_.isCpuDevice());
+  const render::OverlayDraw overlay = ui_->endFrame();
+  const bool capturing = options_.captureLoading.has_value();
+  if (capturing) presenter_.captureNextPresent();
+  // Over the last level's picture while there is one; the first level's over black.
+  const bool shown = played_.simulation
+                         ? presenter_.present(played_.simulation->renderer(), {}, overlay)
+                         : presenter_.presentWithoutPicture(overlay);
+  if (capturing && shown) {
+    const fs::path file = *options_.captureLoading / (level.file.stem().string() + ".png");
+    if (!writeCapture(presenter_, file, "while " + level.name + " loaded")) captureFailed_ = true;
+  }
 }
 
 void Game::load(const fs::path& file) {

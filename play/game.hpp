@@ -36,7 +36,10 @@ class Game {
   int run(const std::filesystem::path& firstLevel);
 
  private:
-  LevelSetup levelSetup() const;
+  LevelSetup levelSetup();
+  // One frame that says the level is loading (LevelSetup::showLoading); --capture-loading saves
+  // it.
+  void showLoading(const game::Level& level);
   void load(const std::filesystem::path& file);
   void setPaused(bool paused);
   void handlePresses();

@@ -247,4 +247,26 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   if (authorOverlay) drawAuthorOverlay(played);
 }
 
+void drawLoadingScreen(const std::string& levelName, bool compilesSlowly) {
+  ImDrawList* list = ImGui::GetForegroundDrawList();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  // Over the last level's picture, when there is one: dimmed, so the words read over it.
+  list->AddRectFilled(ImVec2(0.0f, 0.0f), display, IM_COL32(0, 0, 0, 190));
+  const float size = ImGui::GetFontSize();
+  auto centred = [&](const std::string& text, float textSize, float y, ImU32 textColour) {
+    const float width = ImGui::CalcTextSize(text.c_str()).x * textSize / size;
+    shadowedText(list, ImVec2((display.x - width) / 2, y), textColour, text, textSize);
+  };
+  const float big = size * 2.0f;
+  float y = display.y * 0.42f;
+  centred(levelName, big, y, colour(255, 255, 255));
+  y += big * 1.4f;
+  centred("Loading...", size * 1.2f, y, colour(230, 230, 230));
+  if (compilesSlowly) {
+    y += size * 2.0f;
+    centred("The first time a level is played, its shaders are compiled: several seconds.", size, y,
+            colour(190, 190, 190));
+  }
+}
+
 }  // namespace play

@@ -27,4 +27,9 @@ std::vector<render::HudRect> hudRects(const sim::Simulation& simulation);
 void drawScreenText(const PlayedLevel& played, const render::Presenter& presenter, double fps,
                     bool authorOverlay, const std::string& interactKey);
 
+// While a level loads (its pipelines compile; seconds on a CPU driver the first time): the
+// window darkened, the level's name and "Loading" centred. `compilesSlowly`: say that the
+// first time takes a few seconds. Between UiLayer's beginFrame and endFrame.
+void drawLoadingScreen(const std::string& levelName, bool compilesSlowly);
+
 }  // namespace play

@@ -76,9 +76,11 @@ std::optional<uint64_t> saveWin(const fs::path& levelFile, uint64_t ticks) {
 
 void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& setup) {
   if (played.simulation) finishRecordingOf(played);  // leaving the recorded level
+  const double loadingStarted = glfwGetTime();
   auto level = std::make_unique<game::Level>(game::loadLevel(file, setup.options.levelLoading));
   for (const std::string& warning : level->warnings)
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
+  if (setup.showLoading && (!played.simulation || file != played.file)) setup.showLoading(*level);
   vkDeviceWaitIdle(setup.context.device());  // the last draw may still read the old image
   played.simulation.reset();
   played.level = std::move(level);
@@ -97,17 +99,18 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   played.simulation->preparePictures();  // no stall in the first frames played
   played.tickClock.reset();
   played.lastFrameAt = glfwGetTime();  // loading time is not play time
+  const double loadingSeconds = played.lastFrameAt - loadingStarted;
   played.outcomeAt = -1.0;
   played.bestBefore.reset();
   played.campaignFinished = false;
   played.timed = true;
   if (played.outputWidth > 0) {
-    std::printf("playing %s (%s) at %ux%u, upscaled to %ux%u\n", played.level->name.c_str(),
-                file.c_str(), played.renderWidth, played.renderHeight, played.outputWidth,
-                played.outputHeight);
+    std::printf("playing %s (%s) at %ux%u, upscaled to %ux%u; loaded in %.2f s\n",
+                played.level->name.c_str(), file.c_str(), played.renderWidth, played.renderHeight,
+                played.outputWidth, played.outputHeight, loadingSeconds);
   } else {
-    std::printf("playing %s (%s) at %ux%u\n", played.level->name.c_str(), file.c_str(),
-                played.renderWidth, played.renderHeight);
+    std::printf("playing %s (%s) at %ux%u; loaded in %.2f s\n", played.level->name.c_str(),
+                file.c_str(), played.renderWidth, played.renderHeight, loadingSeconds);
   }
   std::fflush(stdout);
 }

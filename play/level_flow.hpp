@@ -3,6 +3,7 @@
 // progress (a won level unlocks the next; play starts at the first not yet won).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -47,10 +48,15 @@ struct LevelSetup {
   const PlayOptions& options;
   const game::Settings& settings;                    // field of view, render scale
   const std::vector<std::filesystem::path>& levels;  // shipped, in play order
+  // Shows that `level` is loading, once its file has been read and before its pipelines are
+  // made (they compile for seconds the first time on a CPU driver). Called when the level
+  // started is another file than the one being played; the old simulation still exists.
+  std::function<void(const game::Level& level)> showLoading;
 };
 
-// Ends the recording of the level being left, then starts `file`. Throws game::LevelError when
-// it does not load; the level being played stays.
+// Ends the recording of the level being left, then starts `file` (showing that it loads, see
+// LevelSetup::showLoading). Throws game::LevelError when it does not load; the level being
+// played stays.
 void startLevel(PlayedLevel& played, const std::filesystem::path& file, const LevelSetup& setup);
 
 // The functions below return true when a level started or the outcome just showed, so that the

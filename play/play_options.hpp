@@ -21,6 +21,8 @@ struct PlayOptions {
   bool fixedScale = false;
   std::optional<std::filesystem::path> record;   // write the first level's run as a replay
   std::optional<std::filesystem::path> capture;  // the last frame's window image (PNG)
+  // A folder for the window's image while each level loads (<level file name>.png).
+  std::optional<std::filesystem::path> captureLoading;
   bool author = false;                  // --author: the fly camera from the start (F4 toggles it)
   game::LevelLoadOptions levelLoading;  // where "assets/" paths lead
 };

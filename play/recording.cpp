@@ -49,15 +49,21 @@ void finishRecording(std::optional<game::Replay>& recording, const sim::Simulati
   recording.reset();
 }
 
-bool writeCapture(render::Presenter& presenter, const fs::path& file, uint64_t tick) {
+bool writeCapture(render::Presenter& presenter, const fs::path& file, const std::string& when) {
   const std::optional<render::Rgba8Image> image = presenter.takeCapture();
   if (!image) {
-    std::fprintf(stderr, "--capture: no frame was shown to capture (minimised window?)\n");
+    std::fprintf(stderr, "%s: no frame was shown to capture (minimised window?)\n", file.c_str());
     return false;
   }
-  render::writePng(file, *image);
-  std::printf("captured the window (%ux%u) at tick %llu to %s\n", image->width, image->height,
-              static_cast<unsigned long long>(tick), file.c_str());
+  try {
+    render::writePng(file, *image);
+  } catch (const std::exception& failure) {
+    std::fprintf(stderr, "capture not saved: %s\n", failure.what());
+    return false;
+  }
+  std::printf("captured the window (%ux%u) %s to %s\n", image->width, image->height, when.c_str(),
+              file.c_str());
+  std::fflush(stdout);
   return true;
 }
 

@@ -28,9 +28,11 @@ game::Replay startRecording(const std::filesystem::path& replayFile,
 void finishRecording(std::optional<game::Replay>& recording, const sim::Simulation& simulation,
                      const std::string& levelName);
 
-// --capture: the window's image of the last frame, as shown, as a PNG. False (and said) when no
-// frame was shown.
-bool writeCapture(render::Presenter& presenter, const std::filesystem::path& file, uint64_t tick);
+// --capture and --capture-loading: the window's image of the frame captured last, as shown, as a
+// PNG; says so with `when` ("at tick 600"). False (and said) when no frame was shown or the
+// file could not be written.
+bool writeCapture(render::Presenter& presenter, const std::filesystem::path& file,
+                  const std::string& when);
 
 // F12: the window as shown, in dataDirectory()/screenshots. False when nothing was shown yet
 // (minimised): the capture waits for the next frame.

@@ -409,6 +409,15 @@ std::optional<Rgba8Image> Presenter::takeCapture() {
 
 bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
                         const OverlayDraw& overlay) {
+  return presentFrame(&renderer, hud, overlay);
+}
+
+bool Presenter::presentWithoutPicture(const OverlayDraw& overlay) {
+  return presentFrame(nullptr, {}, overlay);
+}
+
+bool Presenter::presentFrame(const Renderer* renderer, std::span<const HudRect> hud,
+                             const OverlayDraw& overlay) {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   if (width <= 0 || height <= 0) return false;  // minimised: nothing to show
@@ -420,9 +429,9 @@ bool Presenter::present(const Renderer& renderer, std::span<const HudRect> hud,
   vkCheck(vkWaitForFences(device, 1, &frameFinished_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
   // The last frame's upload has finished with the buffer: scale this one into it.
   const uint32_t hostFactor =
-      scalesOnHost() ? HostScaledPicture::factorFor(renderer, extent_, format_) : 0;
+      renderer && scalesOnHost() ? HostScaledPicture::factorFor(*renderer, extent_, format_) : 0;
   const bool onHost = hostFactor != 0;
-  if (onHost) hostPicture_->readAndScale(renderer, hostFactor, format_);
+  if (onHost) hostPicture_->readAndScale(*renderer, hostFactor, format_);
   using Clock = std::chrono::steady_clock;
   auto millisecondsSince = [](Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -511,18 +520,24 @@ void Presenter::recordCapture(VkCommandBuffer commands, VkImage target) {
   captureInFlight_ = true;
 }
 
-void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+void Presenter::recordFrame(VkCommandBuffer commands, const Renderer* renderer, uint32_t imageIndex,
                             bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay) {
-  const VkImage source = renderer.outputImage();
+  const VkImage source = renderer ? renderer->outputImage() : VK_NULL_HANDLE;
   const VkImage target = images_[imageIndex];
+  const VkRect2D window{{0, 0}, extent_};
   // Where the picture lies, for the HUD too.
   const VkRect2D area =
-      onHost ? hostPicture_->placement(extent_)
-             : fitRectangle(renderer.outputWidth(), renderer.outputHeight(), extent_);
+      onHost     ? hostPicture_->placement(extent_)
+      : renderer ? fitRectangle(renderer->outputWidth(), renderer->outputHeight(), extent_)
+                 : window;
   VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
   begin.framebuffer = framebuffers_[imageIndex];
   begin.renderArea.extent = extent_;
-  if (onHost) {
+  if (!renderer) {
+    begin.renderPass = renderPass_;
+    vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
+    windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
+  } else if (onHost) {
     // The upload fills the window, black where the picture does not reach.
     hostPicture_->recordUpload(commands, target, extent_);
     begin.renderPass = overPass_;
@@ -534,16 +549,15 @@ void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, 
                        VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT,
                        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
     // The last frame's draw has finished (present() waited for its fence): the set is free.
-    windowPicture_->setPicture(renderer.outputView());
+    windowPicture_->setPicture(renderer->outputView());
     begin.renderPass = renderPass_;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    const VkRect2D window{{0, 0}, extent_};
     // Black bars where the window's aspect ratio differs from the picture's.
     if (area.offset.x != 0 || area.offset.y != 0 || area.extent.width != extent_.width ||
         area.extent.height != extent_.height)
       windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
-    windowPicture_->drawPicture(commands, area, renderer.shownWidth(), renderer.shownHeight(),
-                                renderer.outputWidth(), renderer.outputHeight());
+    windowPicture_->drawPicture(commands, area, renderer->shownWidth(), renderer->shownHeight(),
+                                renderer->outputWidth(), renderer->outputHeight());
   }
 
   // The HUD over the picture, in order: a bar's fill lies over its background.
@@ -569,7 +583,7 @@ void Presenter::recordFrame(VkCommandBuffer commands, const Renderer& renderer, 
 
   if (captureRequested_) recordCapture(commands, target);
   // The next frame's passes write the picture again only after this draw has read it.
-  if (!onHost) {
+  if (renderer && !onHost) {
     imageLayoutBarrier(commands, source, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_GENERAL,
                        VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT,
                        VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT);

@@ -66,6 +66,9 @@ class Presenter {
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
   bool present(const Renderer& renderer, std::span<const HudRect> hud = {},
                const OverlayDraw& overlay = {});
+  // The same with no picture: the window black under the overlay (a screen shown while the
+  // first level loads, before there is a renderer).
+  bool presentWithoutPicture(const OverlayDraw& overlay);
   // How long the last present() waited for the display rather than worked (milliseconds): the
   // wait for a swapchain image, and on a GPU the present call itself, where vsync holds a frame
   // back. On a CPU driver the present call copies the picture to the window: that is work.
@@ -111,8 +114,12 @@ class Presenter {
   void destroySwapchainResources();
   // Waits for the last frame's draw, then rebuilds the swapchain for the window's current size.
   void recreateSwapchain();
+  // present and presentWithoutPicture (renderer null).
+  bool presentFrame(const Renderer* renderer, std::span<const HudRect> hud,
+                    const OverlayDraw& overlay);
   // `onHost`: the picture comes from hostPicture_ (read and scaled), not from the picture pass.
-  void recordFrame(VkCommandBuffer commands, const Renderer& renderer, uint32_t imageIndex,
+  // Without a renderer, black under the HUD and the overlay.
+  void recordFrame(VkCommandBuffer commands, const Renderer* renderer, uint32_t imageIndex,
                    bool onHost, std::span<const HudRect> hud, const OverlayDraw& overlay);
   void recordCapture(VkCommandBuffer commands, VkImage target);
   void collectCapture();  // once the capturing frame has finished: its pixels into capture_
