@@ -1,6 +1,7 @@
 #include "play/game.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -148,25 +149,31 @@ int Game::run(const fs::path& firstLevel) {
 }
 
 LevelSetup Game::levelSetup() {
-  return {
-      context_, compiler_, window_, options_, settings_, levels_, [this](const game::Level& level) {
-        showLoading(level);
-      }};
+  return {context_,
+          compiler_,
+          window_,
+          options_,
+          settings_,
+          levels_,
+          [this](const game::Level& level, float progress) { showLoading(level, progress); }};
 }
 
-void Game::showLoading(const game::Level& level) {
+void Game::showLoading(const game::Level& level, float progress) {
+  // Answers the window manager's pings; what was pressed waits for the level (the mouse's
+  // motion is dropped when it starts: levelStarted).
+  glfwPollEvents();
   ui_->beginFrame();
-  drawLoadingScreen(level.name, context_.isCpuDevice());
+  drawLoadingScreen(level.name, progress, context_.isCpuDevice());
   const render::OverlayDraw overlay = ui_->endFrame();
   const bool capturing = options_.captureLoading.has_value();
   if (capturing) presenter_.captureNextPresent();
-  // Over the last level's picture while there is one; the first level's over black.
-  const bool shown = played_.simulation
-                         ? presenter_.present(played_.simulation->renderer(), {}, overlay)
-                         : presenter_.presentWithoutPicture(overlay);
-  if (capturing && shown) {
+  const bool shown = presenter_.presentWithoutPicture(overlay);
+  if (capturing && shown) {  // each step's over the last: the file keeps the furthest
     const fs::path file = *options_.captureLoading / (level.file.stem().string() + ".png");
-    if (!writeCapture(presenter_, file, "while " + level.name + " loaded")) captureFailed_ = true;
+    if (!writeCapture(presenter_, file,
+                      "while " + level.name + " loaded (" +
+                          std::to_string(int(std::lround(progress * 100.0f))) + " %)"))
+      captureFailed_ = true;
   }
 }
 

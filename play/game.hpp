@@ -37,9 +37,10 @@ class Game {
 
  private:
   LevelSetup levelSetup();
-  // One frame that says the level is loading (LevelSetup::showLoading); --capture-loading saves
-  // it.
-  void showLoading(const game::Level& level);
+  // One frame that says the level is loading and how far it got (LevelSetup::showLoading), and
+  // the window's events, so that the desktop does not take the game for hung; --capture-loading
+  // saves it.
+  void showLoading(const game::Level& level, float progress);
   void load(const std::filesystem::path& file);
   void setPaused(bool paused);
   void handlePresses();

@@ -247,11 +247,9 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
   if (authorOverlay) drawAuthorOverlay(played);
 }
 
-void drawLoadingScreen(const std::string& levelName, bool compilesSlowly) {
+void drawLoadingScreen(const std::string& levelName, float progress, bool compilesSlowly) {
   ImDrawList* list = ImGui::GetForegroundDrawList();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
-  // Over the last level's picture, when there is one: dimmed, so the words read over it.
-  list->AddRectFilled(ImVec2(0.0f, 0.0f), display, IM_COL32(0, 0, 0, 190));
   const float size = ImGui::GetFontSize();
   auto centred = [&](const std::string& text, float textSize, float y, ImU32 textColour) {
     const float width = ImGui::CalcTextSize(text.c_str()).x * textSize / size;
@@ -262,8 +260,15 @@ void drawLoadingScreen(const std::string& levelName, bool compilesSlowly) {
   centred(levelName, big, y, colour(255, 255, 255));
   y += big * 1.4f;
   centred("Loading...", size * 1.2f, y, colour(230, 230, 230));
+  y += size * 2.0f;
+  // The bar: its track in the HUD's shade, filled in sky blue (the goal bars' colours).
+  const float left = display.x * 0.35f, right = display.x * 0.65f, height = size * 0.5f;
+  list->AddRectFilled(ImVec2(left, y), ImVec2(right, y + height), colour(40, 40, 40));
+  list->AddRectFilled(ImVec2(left, y),
+                      ImVec2(left + (right - left) * std::clamp(progress, 0.0f, 1.0f), y + height),
+                      colour(86, 180, 233));
   if (compilesSlowly) {
-    y += size * 2.0f;
+    y += size * 1.5f;
     centred("The first time a level is played, its shaders are compiled: several seconds.", size, y,
             colour(190, 190, 190));
   }

@@ -28,8 +28,9 @@ void drawScreenText(const PlayedLevel& played, const render::Presenter& presente
                     bool authorOverlay, const std::string& interactKey);
 
 // While a level loads (its pipelines compile; seconds on a CPU driver the first time): the
-// window darkened, the level's name and "Loading" centred. `compilesSlowly`: say that the
-// first time takes a few seconds. Between UiLayer's beginFrame and endFrame.
-void drawLoadingScreen(const std::string& levelName, bool compilesSlowly);
+// level's name, "Loading..." and a bar `progress` (0 to 1) full, centred over black.
+// `compilesSlowly`: say that the first time takes several seconds. Between UiLayer's
+// beginFrame and endFrame.
+void drawLoadingScreen(const std::string& levelName, float progress, bool compilesSlowly);
 
 }  // namespace play

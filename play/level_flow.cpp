@@ -21,6 +21,10 @@ namespace {
 
 constexpr double kOutcomeSeconds = 2.0;  // how long "won"/"lost" shows before moving on
 constexpr uint32_t kMinRenderSide = 16;  // the smallest internal image side render scale gives
+// Of a level's first load on lavapipe (2-core AMD EPYC, Mesa's cache empty), the part until its
+// simulation is made (the ray tracing pipeline compiles for its first probe frame): 0.51-0.57
+// of 3.4-6.5 s; the rest prepares the pictures (docs/PERFORMANCE.md, session 41).
+constexpr float kSimulationShareOfLoading = 0.55f;
 
 // --size wins; otherwise the window's size (in screen units, so a high-DPI screen does not
 // quadruple the work) times the render scale: 1280x720 at 0.25 gives 320x180.
@@ -80,7 +84,9 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   auto level = std::make_unique<game::Level>(game::loadLevel(file, setup.options.levelLoading));
   for (const std::string& warning : level->warnings)
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
-  if (setup.showLoading && (!played.simulation || file != played.file)) setup.showLoading(*level);
+  const game::Level& loading = *level;
+  const bool announced = setup.showLoading && (!played.simulation || file != played.file);
+  if (announced) setup.showLoading(loading, 0.0f);
   vkDeviceWaitIdle(setup.context.device());  // the last draw may still read the old image
   played.simulation.reset();
   played.level = std::move(level);
@@ -96,7 +102,13 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   simulationOptions.verticalFovDegrees = setup.settings.fieldOfViewDegrees;
   played.simulation = std::make_unique<sim::Simulation>(setup.context, setup.compiler,
                                                         *played.level, simulationOptions);
-  played.simulation->preparePictures();  // no stall in the first frames played
+  if (announced) setup.showLoading(loading, kSimulationShareOfLoading);
+  // No stall in the first frames played. Not shown after the last frame: the level starts.
+  played.simulation->preparePictures([&](uint32_t done, uint32_t frames) {
+    if (announced && done < frames)
+      setup.showLoading(loading, kSimulationShareOfLoading + (1.0f - kSimulationShareOfLoading) *
+                                                                 float(done) / float(frames));
+  });
   played.tickClock.reset();
   played.lastFrameAt = glfwGetTime();  // loading time is not play time
   const double loadingSeconds = played.lastFrameAt - loadingStarted;

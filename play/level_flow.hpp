@@ -48,10 +48,11 @@ struct LevelSetup {
   const PlayOptions& options;
   const game::Settings& settings;                    // field of view, render scale
   const std::vector<std::filesystem::path>& levels;  // shipped, in play order
-  // Shows that `level` is loading, once its file has been read and before its pipelines are
-  // made (they compile for seconds the first time on a CPU driver). Called when the level
-  // started is another file than the one being played; the old simulation still exists.
-  std::function<void(const game::Level& level)> showLoading;
+  // Shows that `level` is loading and how far it got (0 to 1, by the time each step took on a
+  // 2-core CPU driver, where the first load compiles for seconds): once its file has been read,
+  // once its simulation is made, and between the frames that prepare its pictures. Only when
+  // the level started is another file than the one being played.
+  std::function<void(const game::Level& level, float progress)> showLoading;
 };
 
 // Ends the recording of the level being left, then starts `file` (showing that it loads, see

@@ -536,7 +536,9 @@ void Presenter::recordFrame(VkCommandBuffer commands, const Renderer* renderer, 
   if (!renderer) {
     begin.renderPass = renderPass_;
     vkCmdBeginRenderPass(commands, &begin, VK_SUBPASS_CONTENTS_INLINE);
-    windowPicture_->fill(commands, window, {0.0f, 0.0f, 0.0f, 1.0f});
+    VkClearAttachment black{VK_IMAGE_ASPECT_COLOR_BIT, 0, {{{0.0f, 0.0f, 0.0f, 1.0f}}}};
+    const VkClearRect everything{window, 0, 1};
+    vkCmdClearAttachments(commands, 1, &black, 1, &everything);
   } else if (onHost) {
     // The upload fills the window, black where the picture does not reach.
     hostPicture_->recordUpload(commands, target, extent_);

@@ -1102,7 +1102,9 @@ FrameStats Renderer::renderProbeFrame(const scene::FrameDesc& frame) {
   return submitFrame(frame, false, true);
 }
 
-void Renderer::runEachPicturePipelineOnce(const scene::FrameDesc& frame) {
+void Renderer::runEachPicturePipelineOnce(
+    const scene::FrameDesc& frame,
+    const std::function<void(uint32_t done, uint32_t frames)>& afterEachFrame) {
   if (previousUniforms_)
     throw RenderError("runEachPicturePipelineOnce: only before the first full frame");
   // What a full frame changes and the first one would otherwise start from.
@@ -1126,14 +1128,16 @@ void Renderer::runEachPicturePipelineOnce(const scene::FrameDesc& frame) {
     bool held;
     uint32_t steadyFrames;
   };
+  constexpr std::array kViews{View{false, 0}, View{true, 0},
+                              View{true, UPSCALE_STEADY_FRAMES_UNCLAMPED}};
   // Each a frame of its own, submitted and waited for as frames are, ping-ponging likewise.
-  for (const View view :
-       {View{false, 0}, View{true, 0}, View{true, UPSCALE_STEADY_FRAMES_UNCLAMPED}}) {
-    viewHeld_ = view.held;
-    stillView_ = view.held && options_.stillViewDenoiser;
-    steadyFrames_ = view.steadyFrames;
+  for (uint32_t i = 0; i < kViews.size(); ++i) {
+    viewHeld_ = kViews[i].held;
+    stillView_ = kViews[i].held && options_.stillViewDenoiser;
+    steadyFrames_ = kViews[i].steadyFrames;
     context_.submitAndWait([&](VkCommandBuffer commands) { recordFrame(commands, false, false); });
     parity_ ^= 1u;
+    if (afterEachFrame) afterEachFrame(i + 1, uint32_t(kViews.size()));
   }
   parity_ = parity;
 

@@ -1,6 +1,7 @@
 #pragma once
 // Draws a SceneDesc with the ray tracing pipeline: trace -> tonemap -> (optional) readback.
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -117,8 +118,12 @@ class Renderer {
   // a pipeline's machine code the first time a command buffer runs it, unless Mesa's shader
   // cache holds it: lavapipe froze the first and third frames of a level played for the first
   // time for 0.8-1.4 s each (docs/PERFORMANCE.md, session 40). Play calls this while the level
-  // loads. Only before the first full frame (throws RenderError otherwise).
-  void runEachPicturePipelineOnce(const scene::FrameDesc& frame);
+  // loads. Only before the first full frame (throws RenderError otherwise). `afterEachFrame`
+  // (optional) is called after each of its frames with how many are done and how many there are
+  // (a loading screen's progress).
+  void runEachPicturePipelineOnce(
+      const scene::FrameDesc& frame,
+      const std::function<void(uint32_t done, uint32_t frames)>& afterEachFrame = {});
 
   // New object-to-world transforms, one per scene instance; the next frame updates the TLAS,
   // unless every element is within 1e-5 (10 µm) of what it holds: so small a change is not drawn.

@@ -236,9 +236,10 @@ scene::FrameDesc Simulation::pictureFrame() const {
   return frame;
 }
 
-void Simulation::preparePictures() {
+void Simulation::preparePictures(
+    const std::function<void(uint32_t done, uint32_t frames)>& afterEachFrame) {
   syncRenderer();
-  renderer_->runEachPicturePipelineOnce(pictureFrame());
+  renderer_->runEachPicturePipelineOnce(pictureFrame(), afterEachFrame);
 }
 
 const std::vector<uint8_t>& Simulation::renderPicture(bool readback) {

@@ -9,6 +9,7 @@
 // frames (each new frame moves the reading halfway, in fixed point); focus readings are not.
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -76,7 +77,9 @@ class Simulation {
   // Before the first picture: has the renderer run each of the picture's pipelines once
   // (Renderer::runEachPicturePipelineOnce), so that a CPU driver compiles them now, while the
   // level loads, not in the first frames played. The pictures are those it would have made.
-  void preparePictures();
+  // `afterEachFrame`: as Renderer::runEachPicturePipelineOnce's.
+  void preparePictures(
+      const std::function<void(uint32_t done, uint32_t frames)>& afterEachFrame = {});
   // The last picture's times: each pass's on the GPU and the host's from submit to fence.
   const render::FrameStats& lastPictureStats() const { return lastPictureStats_; }
   render::Renderer& renderer() { return *renderer_; }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # While a level loads (seconds the first time on a CPU driver, its pipelines compiling), the
-# window says so: the first level's name and "Loading..." over black, and once a level is won,
-# the next one's over the last picture, dimmed. A campaign of two levels of its own
-# (SIGHTLINE_DATA_DIR): the first wins by a timer rule, so no input is needed.
+# window says so, with the level's name and a bar of how far it got: the first level's, and
+# once a level is won, the next one's. A campaign of two levels of its own (SIGHTLINE_DATA_DIR):
+# the first wins by a timer rule, so no input is needed.
 # Usage: play_loading_test.sh path/to/sightline path/to/source/directory
 set -uo pipefail
 sightline=$1
@@ -57,37 +57,43 @@ SIGHTLINE_DATA_DIR=$root env -u WAYLAND_DISPLAY xvfb-run -a -s "-screen 0 1280x7
   { cat "$work/log"; fail "play failed"; }
 cat "$work/log"
 grep -qi "validation" "$work/log" && fail "validation messages (see above)"
-grep -q "^captured the window (640x360) while Timed Win loaded to " "$work/log" ||
+grep -q "^captured the window (640x360) while Timed Win loaded (0 %) to " "$work/log" ||
   fail "no loading screen captured for the first level"
 grep -q "^won Timed Win at tick 30" "$work/log" || fail "the first level was not won at tick 30"
-grep -q "^captured the window (640x360) while The Second loaded to " "$work/log" ||
+grep -q "^captured the window (640x360) while The Second loaded (0 %) to " "$work/log" ||
   fail "no loading screen captured for the level after the win"
 grep -Eq "^playing The Second \(.*\) at [0-9]+x[0-9]+.*; loaded in [0-9.]+ s$" "$work/log" ||
   fail "the second level did not start, or play did not say how long it loaded"
 
-# The text is white, centred at 0.42 of the height; the name is drawn twice the font's size.
+# The screen's own steps: 0 % once the level's file is read, 55 % once its simulation is made,
+# then two of the three frames that prepare its pictures (70 %, 85 %); the last step's stays.
+for name in "Timed Win" "The Second"; do
+  steps=$(grep -o "while $name loaded ([0-9]* %)" "$work/log" | grep -o "[0-9]* %" | tr -d ' %' | paste -sd ' ')
+  [ "$steps" = "0 55 70 85" ] || fail "$name's loading screen showed the steps '$steps', not '0 55 70 85'"
+done
+
+# Over black: the name and "Loading..." in white, centred at 0.42 of the height (the name twice
+# the font's size), and under them the bar, 85 % of it sky blue (86, 180, 233), the rest its
+# dark track (40, 40, 40), between 0.35 and 0.65 of the width.
 "$system_python" - "$work/loading" <<'PY' || fail "the loading screens are not as expected"
 import sys
 from PIL import Image
-folder = sys.argv[1]
-first = Image.open(f"{folder}/timed_win.png").convert("RGB")
-second = Image.open(f"{folder}/second.png").convert("RGB")
-assert first.size == second.size == (640, 360), (first.size, second.size)
-def text_pixels(image):
-    band = image.crop((0, int(0.38 * 360), 640, int(0.62 * 360)))
-    return sum(1 for pixel in band.getdata() if min(pixel) >= 200)
-def picture_colours(image):  # above the text
-    return set(image.crop((0, 0, 640, int(0.35 * 360))).getdata())
-print("first: text pixels", text_pixels(first), "colours above it", len(picture_colours(first)))
-print("second: text pixels", text_pixels(second), "colours above it", len(picture_colours(second)))
-# The first level's: black but for the words.
-assert picture_colours(first) == {(0, 0, 0)}, sorted(picture_colours(first))[:5]
-assert text_pixels(first) >= 100, text_pixels(first)
-# The second's: the first level's last picture behind the words, dimmed to at most 26 % of its
-# brightness (black at 190/255 over it).
-above = picture_colours(second)
-assert len(above) >= 20, len(above)
-assert max(max(pixel) for pixel in above) <= 70, max(max(pixel) for pixel in above)
-assert text_pixels(second) >= 100, text_pixels(second)
+for name in ("timed_win", "second"):
+    image = Image.open(f"{sys.argv[1]}/{name}.png").convert("RGB")
+    assert image.size == (640, 360), image.size
+    above = set(image.crop((0, 0, 640, int(0.38 * 360))).getdata())
+    band = list(image.crop((0, int(0.38 * 360), 640, int(0.75 * 360))).getdata())
+    text = sum(1 for pixel in band if min(pixel) >= 200)
+    rows = [y for y in range(int(0.38 * 360), int(0.75 * 360))
+            if (86, 180, 233) in image.crop((0, y, 640, y + 1)).getdata()]
+    assert rows, "no bar"
+    blue = [x for y in rows for x in range(640) if image.getpixel((x, y)) == (86, 180, 233)]
+    track = [x for y in rows for x in range(640) if image.getpixel((x, y)) == (40, 40, 40)]
+    print(name, "text pixels", text, "bar from", min(blue), "to", max(blue), "track to", max(track))
+    assert above == {(0, 0, 0)}, sorted(above)[:5]
+    assert text >= 100, text
+    filled = (max(blue) + 1 - 0.35 * 640) / (0.3 * 640)
+    assert abs(min(blue) - 0.35 * 640) <= 1 and abs(filled - 0.85) <= 0.01, (min(blue), filled)
+    assert abs(max(track) + 1 - 0.65 * 640) <= 1, max(track)
 PY
-echo "PASS: the window says a level is loading, over black first and over the last picture after a win"
+echo "PASS: the window says which level is loading and how far it got, the first and the next after a win"

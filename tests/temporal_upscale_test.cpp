@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -777,7 +779,12 @@ TEST_F(TemporalUpscaleTest, running_each_pipeline_once_first_changes_no_picture)
   auto prepared = upscaler(scene);
   auto plain = upscaler(scene);
   ASSERT_TRUE(prepared->softShadows());
-  prepared->runEachPicturePipelineOnce(frameAt(0));
+  // A frame each for a moving view, a held camera and a steady view, each said when done (what
+  // a loading screen's bar follows).
+  std::vector<std::pair<uint32_t, uint32_t>> steps;
+  prepared->runEachPicturePipelineOnce(
+      frameAt(0), [&](uint32_t done, uint32_t frames) { steps.emplace_back(done, frames); });
+  EXPECT_EQ(steps, (std::vector<std::pair<uint32_t, uint32_t>>{{1, 3}, {2, 3}, {3, 3}}));
   constexpr uint32_t kSliding = 4;
   const uint32_t frames = kSliding + UPSCALE_STEADY_FRAMES_UNCLAMPED + 3;
   for (uint32_t frame = 0; frame < frames; ++frame) {
