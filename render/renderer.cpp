@@ -1174,8 +1174,7 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &commands_;
   vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, frameDone_), "vkQueueSubmit");
-  vkCheck(vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, UINT64_MAX),
-          "vkWaitForFences");
+  waitForFrame();
   const auto end = std::chrono::steady_clock::now();
   vkCheck(vkResetFences(context_.device(), 1, &frameDone_), "vkResetFences");
 
@@ -1213,6 +1212,24 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   }
   parity_ ^= 1u;
   return stats;
+}
+
+void Renderer::waitForFrame() const {
+  if (!options_.whileWaiting) {
+    vkCheck(vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, UINT64_MAX),
+            "vkWaitForFences");
+    return;
+  }
+  const uint64_t slice =
+      uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(options_.waitSlice).count());
+  for (;;) {
+    const VkResult waited = vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, slice);
+    if (waited != VK_TIMEOUT) {
+      vkCheck(waited, "vkWaitForFences");
+      return;
+    }
+    options_.whileWaiting();
+  }
 }
 
 }  // namespace render

@@ -1,5 +1,6 @@
 #pragma once
 // Draws a SceneDesc with the ray tracing pipeline: trace -> tonemap -> (optional) readback.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -79,6 +80,11 @@ struct RendererOptions {
   // How the upscaler's resolve writes its results (the same either way; Auto: colour
   // attachments on CPU drivers, image stores on GPUs).
   ResolveWrites resolveWrites = ResolveWrites::Auto;
+  // Called after each `waitSlice` that the host waits for a frame (on a CPU driver, a level's
+  // first frame compiles its ray tracing pipeline for seconds): a window answers its events
+  // there, so the desktop does not take it for hung. Empty: one wait until the frame is done.
+  std::function<void()> whileWaiting;
+  std::chrono::milliseconds waitSlice{100};
 };
 
 // GPU time of each pass from timestamp queries (0 where the device has no timestamps).
@@ -216,6 +222,8 @@ class Renderer {
   uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback, bool probeOnly);
   FrameStats submitFrame(const scene::FrameDesc& frame, bool readback, bool probeOnly);
+  // For the frame's fence, calling options_.whileWaiting after each slice where there is one.
+  void waitForFrame() const;
 
   const Context& context_;
   RendererOptions options_;

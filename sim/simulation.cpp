@@ -20,6 +20,7 @@ render::RendererOptions rendererOptions(const SimulationOptions& options) {
   result.height = options.height;
   result.outputWidth = options.outputWidth;
   result.outputHeight = options.outputHeight;
+  result.whileWaiting = options.whileWaiting;
   return result;
 }
 

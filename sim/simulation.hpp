@@ -39,6 +39,8 @@ struct SimulationOptions {
   // Pictures upscaled temporally to this size (0: none); probes keep width x height.
   uint32_t outputWidth = 0;
   uint32_t outputHeight = 0;
+  // While a frame is waited for, every 100 ms (render::RendererOptions::whileWaiting).
+  std::function<void()> whileWaiting;
 };
 
 class Simulation {

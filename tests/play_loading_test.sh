@@ -65,15 +65,15 @@ grep -q "^captured the window (640x360) while The Second loaded (0 %) to " "$wor
 grep -Eq "^playing The Second \(.*\) at [0-9]+x[0-9]+.*; loaded in [0-9.]+ s$" "$work/log" ||
   fail "the second level did not start, or play did not say how long it loaded"
 
-# The screen's own steps: 0 % once the level's file is read, 55 % once its simulation is made,
-# then two of the three frames that prepare its pictures (70 %, 85 %); the last step's stays.
+# The screen's own steps: 0 % once the level's file is read, 65 % once its simulation is made,
+# then two of the three frames that prepare its pictures (77 %, 88 %); the last step's stays.
 for name in "Timed Win" "The Second"; do
   steps=$(grep -o "while $name loaded ([0-9]* %)" "$work/log" | grep -o "[0-9]* %" | tr -d ' %' | paste -sd ' ')
-  [ "$steps" = "0 55 70 85" ] || fail "$name's loading screen showed the steps '$steps', not '0 55 70 85'"
+  [ "$steps" = "0 65 77 88" ] || fail "$name's loading screen showed the steps '$steps', not '0 65 77 88'"
 done
 
 # Over black: the name and "Loading..." in white, centred at 0.42 of the height (the name twice
-# the font's size), and under them the bar, 85 % of it sky blue (86, 180, 233), the rest its
+# the font's size), and under them the bar, 88 % of it sky blue (86, 180, 233), the rest its
 # dark track (40, 40, 40), between 0.35 and 0.65 of the width.
 "$system_python" - "$work/loading" <<'PY' || fail "the loading screens are not as expected"
 import sys
@@ -93,7 +93,7 @@ for name in ("timed_win", "second"):
     assert above == {(0, 0, 0)}, sorted(above)[:5]
     assert text >= 100, text
     filled = (max(blue) + 1 - 0.35 * 640) / (0.3 * 640)
-    assert abs(min(blue) - 0.35 * 640) <= 1 and abs(filled - 0.85) <= 0.01, (min(blue), filled)
+    assert abs(min(blue) - 0.35 * 640) <= 1 and abs(filled - 0.883) <= 0.01, (min(blue), filled)
     assert abs(max(track) + 1 - 0.65 * 640) <= 1, max(track)
 PY
 echo "PASS: the window says which level is loading and how far it got, the first and the next after a win"

@@ -192,6 +192,33 @@ TEST_F(VulkanTest, moving_an_instance_updates_the_tlas_and_moving_it_back_restor
   EXPECT_EQ(before, renderer.pixels());
 }
 
+// play answers the window's events while a frame is waited for (RendererOptions::whileWaiting),
+// since a level's first frame on a CPU driver compiles for seconds. With no wait slice the call
+// comes at once; the frame is the same as without it.
+TEST_F(VulkanTest, a_frame_waited_for_in_slices_calls_between_them_and_renders_the_same) {
+  game::Level level = game::parseLevel(
+      planeLevel("[0.8, 0.8, 0.8]",
+                 R"("sun": {"type": "directional", "direction": [1, -1, 0], "intensity": 2.0})",
+                 R"(, "block": {"box": {"size": [0.3, 0.3, 0.3]}})",
+                 R"(, "block": {"mesh": "block", "material": "lambert", "position": [0, 0.3, 0]})"),
+      test::sourceDir() / "tests" / "inline_level.json");
+  const scene::SceneDesc scene = game::buildSceneDesc(level);
+  scene::FrameDesc frame;
+  frame.camera = level.camera;
+  render::RendererOptions options;
+  options.width = 64;
+  options.height = 64;
+  render::Renderer plain(context(), compiler(), scene, options);
+  plain.renderFrame(frame);
+  uint32_t calls = 0;
+  options.whileWaiting = [&] { ++calls; };
+  options.waitSlice = std::chrono::milliseconds(0);
+  render::Renderer sliced(context(), compiler(), scene, options);
+  sliced.renderFrame(frame);
+  EXPECT_GT(calls, 0u);
+  EXPECT_EQ(plain.pixels(), sliced.pixels());
+}
+
 TEST_F(VulkanTest, ray_gen_counts_one_primary_ray_per_pixel_and_one_shadow_ray_per_lit_hit) {
   game::Level level = game::parseLevel(
       planeLevel("[0.8, 0.8, 0.8]",
