@@ -66,8 +66,8 @@ class Presenter {
   // when nothing was shown (a minimised window, or a swapchain that had to be recreated).
   bool present(const Renderer& renderer, std::span<const HudRect> hud = {},
                const OverlayDraw& overlay = {});
-  // The same with no picture: the window black under the overlay (a screen shown while the
-  // first level loads, before there is a renderer).
+  // The same with no picture: the window black under the overlay (the screen shown while a
+  // level loads).
   bool presentWithoutPicture(const OverlayDraw& overlay);
   // How long the last present() waited for the display rather than worked (milliseconds): the
   // wait for a swapchain image, and on a GPU the present call itself, where vsync holds a frame
