@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <GLFW/glfw3.h>
@@ -16,6 +17,7 @@
 #include "render/context.hpp"
 #include "render/frame_time_percentiles.hpp"
 #include "render/presenter.hpp"
+#include "render/vulkan_error.hpp"
 
 namespace play {
 namespace fs = std::filesystem;
@@ -166,8 +168,16 @@ void Game::showLoading(const game::Level& level, float progress) {
   drawLoadingScreen(level.name, progress, context_.isCpuDevice());
   const render::OverlayDraw overlay = ui_->endFrame();
   const bool capturing = options_.captureLoading.has_value();
-  if (capturing) presenter_.captureNextPresent();
-  const bool shown = presenter_.presentWithoutPicture(overlay);
+  bool shown = false;
+  try {
+    if (capturing) presenter_.captureNextPresent();
+    shown = presenter_.presentWithoutPicture(overlay);
+  } catch (const render::RenderError& error) {
+    // The load goes on without its screen; what is wrong with the window shows again in play.
+    std::fprintf(stderr, "loading screen not shown: %s\n", error.what());
+    if (capturing) captureFailed_ = true;
+    return;
+  }
   if (capturing && shown) {  // each step's over the last: the file keeps the furthest
     const fs::path file = *options_.captureLoading / (level.file.stem().string() + ".png");
     if (!writeCapture(presenter_, file,
@@ -276,7 +286,12 @@ void Game::handlePresses() {
     setPaused(false);
   }
   if (gamepadStartPressed(startWasDown_)) setPaused(!paused_);
-  for (int key : events_.keysPressed) {
+  // Taken first: a restart below loads the level, which polls the window's events while it
+  // waits (what is pressed meanwhile counts next frame).
+  std::vector<int> keysPressed;
+  keysPressed.swap(events_.keysPressed);
+  const double wheel = std::exchange(events_.wheel, 0.0);
+  for (int key : keysPressed) {
     if (menu_.rebinding) {  // the menu waits for the key to bind; Escape cancels
       rebindAction(settings_, keyCodes_, *menu_.rebinding, key);
       menu_.rebinding.reset();
@@ -312,9 +327,7 @@ void Game::handlePresses() {
         break;
     }
   }
-  events_.keysPressed.clear();
-  if (!paused_) startWheelAdjust(wheel_, events_.wheel);
-  events_.wheel = 0.0;
+  if (!paused_) startWheelAdjust(wheel_, wheel);
 }
 
 void Game::runTicks(double elapsed) {

@@ -58,6 +58,14 @@ void chooseRenderSize(PlayedLevel& played, const LevelSetup& setup) {
   played.outputHeight = std::max(played.outputHeight, played.renderHeight);
 }
 
+// Whether two paths name one file, however they are written (relative, with "..").
+bool sameFile(const fs::path& a, const fs::path& b) {
+  std::error_code errorA, errorB;
+  const fs::path canonicalA = fs::weakly_canonical(a, errorA);
+  const fs::path canonicalB = fs::weakly_canonical(b, errorB);
+  return errorA || errorB ? a == b : canonicalA == canonicalB;
+}
+
 void finishRecordingOf(PlayedLevel& played) {
   finishRecording(played.recording, *played.simulation, played.level->name);
 }
@@ -86,7 +94,7 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   for (const std::string& warning : level->warnings)
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
   const game::Level& loading = *level;
-  const bool announced = setup.showLoading && (!played.simulation || file != played.file);
+  const bool announced = setup.showLoading && (!played.simulation || !sameFile(file, played.file));
   if (announced) setup.showLoading(loading, 0.0f);
   vkDeviceWaitIdle(setup.context.device());  // the last draw may still read the old image
   played.simulation.reset();
@@ -142,9 +150,8 @@ bool restartLevel(PlayedLevel& played, const LevelSetup& setup) {
 }
 
 bool startNextLevel(PlayedLevel& played, const LevelSetup& setup) {
-  auto current = std::find_if(setup.levels.begin(), setup.levels.end(), [&](const fs::path& level) {
-    return fs::weakly_canonical(level) == fs::weakly_canonical(played.file);
-  });
+  auto current = std::find_if(setup.levels.begin(), setup.levels.end(),
+                              [&](const fs::path& level) { return sameFile(level, played.file); });
   if (current == setup.levels.end()) return restartLevel(played, setup);  // not shipped: again
   ++current;
   if (current == setup.levels.end()) {

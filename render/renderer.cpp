@@ -15,6 +15,7 @@
 #include "render/blue_noise.hpp"
 #include "render/bvh_order.hpp"
 #include "render/context.hpp"
+#include "render/fence_wait.hpp"
 #include "render/gpu_types.hpp"
 #include "render/ray_tracing_pipeline.hpp"
 #include "render/render_space.hpp"
@@ -1135,7 +1136,8 @@ void Renderer::runEachPicturePipelineOnce(
     viewHeld_ = kViews[i].held;
     stillView_ = kViews[i].held && options_.stillViewDenoiser;
     steadyFrames_ = kViews[i].steadyFrames;
-    context_.submitAndWait([&](VkCommandBuffer commands) { recordFrame(commands, false, false); });
+    recordCommands(false, false);
+    submitAndWaitForFrame();
     parity_ ^= 1u;
     if (afterEachFrame) afterEachFrame(i + 1, uint32_t(kViews.size()));
   }
@@ -1162,21 +1164,10 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   writeLightRoutes();
   writeFrameUniforms(frame, probeOnly);
 
-  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
-  VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
-  recordFrame(commands_, readback, probeOnly);
-  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
-
+  recordCommands(readback, probeOnly);
   const auto start = std::chrono::steady_clock::now();
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &commands_;
-  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, frameDone_), "vkQueueSubmit");
-  waitForFrame();
+  submitAndWaitForFrame();
   const auto end = std::chrono::steady_clock::now();
-  vkCheck(vkResetFences(context_.device(), 1, &frameDone_), "vkResetFences");
 
   FrameStats stats;
   stats.milliseconds = std::chrono::duration<double, std::milli>(end - start).count();
@@ -1214,22 +1205,22 @@ FrameStats Renderer::submitFrame(const scene::FrameDesc& frame, bool readback, b
   return stats;
 }
 
-void Renderer::waitForFrame() const {
-  if (!options_.whileWaiting) {
-    vkCheck(vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, UINT64_MAX),
-            "vkWaitForFences");
-    return;
-  }
-  const uint64_t slice =
-      uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(options_.waitSlice).count());
-  for (;;) {
-    const VkResult waited = vkWaitForFences(context_.device(), 1, &frameDone_, VK_TRUE, slice);
-    if (waited != VK_TIMEOUT) {
-      vkCheck(waited, "vkWaitForFences");
-      return;
-    }
-    options_.whileWaiting();
-  }
+void Renderer::recordCommands(bool readback, bool probeOnly) {
+  vkCheck(vkResetCommandBuffer(commands_, 0), "vkResetCommandBuffer");
+  VkCommandBufferBeginInfo beginInfo{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  beginInfo.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  vkCheck(vkBeginCommandBuffer(commands_, &beginInfo), "vkBeginCommandBuffer");
+  recordFrame(commands_, readback, probeOnly);
+  vkCheck(vkEndCommandBuffer(commands_), "vkEndCommandBuffer");
+}
+
+void Renderer::submitAndWaitForFrame() const {
+  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  submit.commandBufferCount = 1;
+  submit.pCommandBuffers = &commands_;
+  vkCheck(vkQueueSubmit(context_.queue(), 1, &submit, frameDone_), "vkQueueSubmit");
+  waitForFence(context_.device(), frameDone_, options_.waitSlice, options_.whileWaiting);
+  vkCheck(vkResetFences(context_.device(), 1, &frameDone_), "vkResetFences");
 }
 
 }  // namespace render

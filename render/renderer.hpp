@@ -80,9 +80,9 @@ struct RendererOptions {
   // How the upscaler's resolve writes its results (the same either way; Auto: colour
   // attachments on CPU drivers, image stores on GPUs).
   ResolveWrites resolveWrites = ResolveWrites::Auto;
-  // Called after each `waitSlice` that the host waits for a frame (on a CPU driver, a level's
-  // first frame compiles its ray tracing pipeline for seconds): a window answers its events
-  // there, so the desktop does not take it for hung. Empty: one wait until the frame is done.
+  // Called after each `waitSlice` that the host waits for a frame, probe frames and those of
+  // runEachPicturePipelineOnce included (on a CPU driver, a level's first frames compile their
+  // pipelines for seconds): a window answers its events there (waitForFence).
   std::function<void()> whileWaiting;
   std::chrono::milliseconds waitSlice{100};
 };
@@ -222,8 +222,11 @@ class Renderer {
   uint32_t denoiserIterations(const scene::FrameDesc& frame) const;
   void recordFrame(VkCommandBuffer commands, bool readback, bool probeOnly);
   FrameStats submitFrame(const scene::FrameDesc& frame, bool readback, bool probeOnly);
-  // For the frame's fence, calling options_.whileWaiting after each slice where there is one.
-  void waitForFrame() const;
+  // A frame's commands into commands_.
+  void recordCommands(bool readback, bool probeOnly);
+  // Submits commands_ and waits for frameDone_ (waitForFence with options_.whileWaiting), then
+  // resets it.
+  void submitAndWaitForFrame() const;
 
   const Context& context_;
   RendererOptions options_;
