@@ -38,6 +38,16 @@ std::string planeLevel(const std::string& colour, const std::string& lights,
   })";
 }
 
+// A 0.3 m block on the plane, its shadow cast sideways by a slanting sun.
+game::Level blockOnPlaneLevel() {
+  return game::parseLevel(
+      planeLevel("[0.8, 0.8, 0.8]",
+                 R"("sun": {"type": "directional", "direction": [1, -1, 0], "intensity": 2.0})",
+                 R"(, "block": {"box": {"size": [0.3, 0.3, 0.3]}})",
+                 R"(, "block": {"mesh": "block", "material": "lambert", "position": [0, 0.3, 0]})"),
+      test::sourceDir() / "tests" / "inline_level.json");
+}
+
 int expectedByte(double linearRadiance) {
   return int(std::lround(255.0 * scene::linearToSrgb(float(std::min(linearRadiance, 1.0)))));
 }
@@ -167,12 +177,7 @@ TEST_F(VulkanTest, first_level_matches_golden_image_within_tolerance) {
 }
 
 TEST_F(VulkanTest, moving_an_instance_updates_the_tlas_and_moving_it_back_restores_the_image) {
-  game::Level level = game::parseLevel(
-      planeLevel("[0.8, 0.8, 0.8]",
-                 R"("sun": {"type": "directional", "direction": [1, -1, 0], "intensity": 2.0})",
-                 R"(, "block": {"box": {"size": [0.3, 0.3, 0.3]}})",
-                 R"(, "block": {"mesh": "block", "material": "lambert", "position": [0, 0.3, 0]})"),
-      test::sourceDir() / "tests" / "inline_level.json");
+  const game::Level level = blockOnPlaneLevel();
   const scene::SceneDesc scene = game::buildSceneDesc(level);
   render::RendererOptions options;
   options.width = 17;
@@ -230,12 +235,7 @@ TEST_F(VulkanTest, a_fence_waited_for_in_slices_calls_between_them_until_it_is_s
 
 // The frames waited for in slices are the frames waited for at once.
 TEST_F(VulkanTest, a_frame_waited_for_in_slices_renders_the_same) {
-  game::Level level = game::parseLevel(
-      planeLevel("[0.8, 0.8, 0.8]",
-                 R"("sun": {"type": "directional", "direction": [1, -1, 0], "intensity": 2.0})",
-                 R"(, "block": {"box": {"size": [0.3, 0.3, 0.3]}})",
-                 R"(, "block": {"mesh": "block", "material": "lambert", "position": [0, 0.3, 0]})"),
-      test::sourceDir() / "tests" / "inline_level.json");
+  const game::Level level = blockOnPlaneLevel();
   const scene::SceneDesc scene = game::buildSceneDesc(level);
   scene::FrameDesc frame;
   frame.camera = level.camera;
