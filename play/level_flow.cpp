@@ -128,14 +128,13 @@ void startLevel(PlayedLevel& played, const fs::path& file, const LevelSetup& set
   played.bestBefore.reset();
   played.campaignFinished = false;
   played.timed = true;
-  if (played.outputWidth > 0) {
-    std::printf("playing %s (%s) at %ux%u, upscaled to %ux%u; loaded in %.2f s\n",
-                played.level->name.c_str(), file.c_str(), played.renderWidth, played.renderHeight,
-                played.outputWidth, played.outputHeight, loadingSeconds);
-  } else {
-    std::printf("playing %s (%s) at %ux%u; loaded in %.2f s\n", played.level->name.c_str(),
-                file.c_str(), played.renderWidth, played.renderHeight, loadingSeconds);
-  }
+  const std::string upscaled = played.outputWidth > 0
+                                   ? ", upscaled to " + std::to_string(played.outputWidth) + "x" +
+                                         std::to_string(played.outputHeight)
+                                   : "";
+  std::printf("playing %s (%s) at %ux%u%s; loaded in %.2f s\n", played.level->name.c_str(),
+              file.c_str(), played.renderWidth, played.renderHeight, upscaled.c_str(),
+              loadingSeconds);
   std::fflush(stdout);
 }
 
